@@ -1,0 +1,384 @@
+//! The averaged model J' = E1(J): physics.md sec. 3.
+//!
+//! Started from J_B = 2 R v0 (the first flight's generating impulse), the bounce time and the
+//! impact count are t = integral dJ / |E1|, n = 1 + integral dJ / (|E1| T), computed in s = ln J
+//! (smooth, bounded integrands) by composite Gauss-Legendre, panels at most 0.5 wide, with
+//! [`Nodes`] points each. Below J = [`Float::TAIL_CUTOFF`] Omega |Delta| the small-impulse
+//! asymptote of E1 (physics.md sec. 4) is integrated in closed form: its relative error there
+//! is O(cutoff), on a tail that is itself O(cutoff) of the total.
+
+use crate::closed::{asymptotic_count, asymptotic_time, by_regime};
+use crate::error::{non_negative, Error, Parameter};
+use crate::mechanisms::Dissipation;
+use crate::prediction::{Approximations, Count, Prediction, Tier, Time};
+use crate::quadrature::{integrate, panel, Nodes, MAX_PANELS, PANEL_WIDTH};
+use crate::regime::Regime;
+use crate::{accuracy, Float, Scene};
+
+/// The averaged model of a scene, integrated with a given number of nodes per panel.
+///
+/// ```
+/// use contact_bounce::{Averaged, Contact, Frequency, Nodes, Offset, Restitution, Scene, Threshold, Undamped};
+/// let scene = Scene::new(Contact {
+///     frequency: Frequency::Omega(1000.0_f64), offset: Offset::Delta(-1e-3),
+///     restitution: Restitution::Coefficient(0.9), closing_speed: 0.01, threshold: Threshold::None,
+/// }, Undamped)?;
+/// let averaged = Averaged::new(&scene, Nodes::N8);
+/// let end = averaged.predict().end_time.seconds().unwrap();
+/// // j0 = 0.018: the bouncing-ball limit t_b1 holds to ~1e-4.
+/// let t_b1 = scene.t_b1().unwrap().time;
+/// assert!((end / t_b1 - 1.0).abs() < 1e-3);
+/// // The envelope falls from J_B at t = 0 to 0 at the end.
+/// assert!((averaged.envelope(0.0)?.impulse - scene.start_impulse()).abs() < 1e-15);
+/// assert_eq!(averaged.envelope(end * 1.01)?.impulse, 0.0);
+/// # Ok::<(), contact_bounce::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy)]
+pub struct Averaged<'a, F, D> {
+    scene: &'a Scene<F, D>,
+    nodes: Nodes,
+}
+
+/// The averaged state at a time.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct EnvelopePoint<F> {
+    /// The generating impulse J(t) (m/s); 0 once the bounce has ended.
+    pub impulse: F,
+    /// The averaged number of impacts up to t, impact 0 included (infinite past a Zeno end).
+    pub impacts: Count<F>,
+}
+
+/// Positions of the two contacts reconstructed from the envelope (the paper's laws of motion,
+/// Fig. 3).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Motion<F> {
+    /// x = x1 - x2 (m).
+    pub relative: F,
+    /// x1 (m).
+    pub body1: F,
+    /// x2 (m).
+    pub body2: F,
+}
+
+/// How the relative motion is shared between the bodies: x1 = X + (m2/M) x, x2 = X - (m1/M) x,
+/// X the centre of mass, a free damped oscillator (exact when the partial frequencies match).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Bodies<F> {
+    /// m1 / (m1 + m2), in [0, 1].
+    pub mass_fraction_1: F,
+    /// X(0) (m).
+    pub centre: F,
+    /// X'(0) (m/s).
+    pub centre_velocity: F,
+}
+
+impl<F: Float> Bodies<F> {
+    /// Equal masses, centre of mass at rest at 0: the paper's x1 = -J chi / 2, x2 = J chi / 2.
+    #[must_use]
+    pub fn equal_at_rest() -> Self {
+        Self {
+            mass_fraction_1: F::HALF,
+            centre: F::ZERO,
+            centre_velocity: F::ZERO,
+        }
+    }
+    /// Body 2 at `x2` moving at `v2`, body 1 at x2 + Delta closing at v0 relative to body 2,
+    /// with mass fraction m1 / (m1 + m2).
+    #[must_use]
+    pub fn from_initial(mass_fraction_1: F, delta: F, closing_speed: F, x2: F, v2: F) -> Self {
+        Self {
+            mass_fraction_1,
+            centre: x2 + mass_fraction_1 * delta,
+            centre_velocity: v2 + mass_fraction_1 * closing_speed,
+        }
+    }
+}
+
+/// x(t) of x'' + 2 zeta Omega x' + Omega^2 x = 0 from x(0), x'(0): under-, critically and
+/// over-damped.
+pub(crate) fn free_damped<F: Float>(omega: F, zeta: F, x0: F, v0: F, t: F) -> F {
+    if zeta < F::ONE {
+        let damped = omega * (F::ONE - zeta * zeta).sqrt();
+        let decay = (-zeta * omega * t).exp();
+        decay * (x0 * (damped * t).cos() + (v0 + zeta * omega * x0) / damped * (damped * t).sin())
+    } else if zeta == F::ONE {
+        (-omega * t).exp() * (x0 + (v0 + omega * x0) * t)
+    } else {
+        let root = (zeta * zeta - F::ONE).sqrt();
+        let slow = -omega / (zeta + root); // -omega (zeta - root), without cancellation
+        let fast = -omega * (zeta + root);
+        let a = (v0 - fast * x0) / (slow - fast);
+        a * (slow * t).exp() + (x0 - a) * (fast * t).exp()
+    }
+}
+
+/// (1 - e^-x) / x, accurate for small x.
+fn relaxed<F: Float>(x: F) -> F {
+    if x.abs() < F::from_f64(1e-8) {
+        F::ONE - x * F::HALF
+    } else {
+        -(-x).exp_m1() / x
+    }
+}
+
+impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
+    /// The averaged model of `scene` with `nodes` points per panel.
+    #[must_use]
+    pub const fn new(scene: &'a Scene<F, D>, nodes: Nodes) -> Self {
+        Self { scene, nodes }
+    }
+
+    /// The impulse below which the asymptote replaces the quadrature (0: none, when Delta = 0
+    /// makes E1 exactly linear, or when the asymptote is degenerate).
+    fn cutoff(&self) -> F {
+        let a = self.scene.asymptote();
+        let degenerate = a.constant <= F::ZERO && a.linear <= F::ZERO && a.inverse <= F::ZERO;
+        if degenerate {
+            F::ZERO
+        } else {
+            F::TAIL_CUTOFF * self.scene.omega() * self.scene.delta().abs()
+        }
+    }
+
+    /// The integrands in s = ln J: (J / |E1|, J / (|E1| T)).
+    fn integrand(&self, s: F) -> (F, F) {
+        let impulse = s.exp();
+        let point = self.scene.orbit().at(impulse);
+        let w = impulse / -self.scene.rate_at(&point);
+        (w, w / point.period())
+    }
+
+    /// Time and impacts while J falls from `high` to `low` (0 <= low < high), and whether the
+    /// panel cap was hit: quadrature down to the cutoff, the asymptote below it.
+    pub(crate) fn fall(&self, high: F, low: F) -> (Time<F>, Count<F>, bool) {
+        let cut = self.cutoff();
+        let quad_low = low.max(cut);
+        let (mut time, mut impacts, mut capped) = (F::ZERO, F::ZERO, false);
+        if quad_low > F::ZERO && high > quad_low {
+            let ((t, n), cap) = integrate(quad_low.ln(), high.ln(), self.nodes, |s| self.integrand(s));
+            (time, impacts, capped) = (t, n, cap);
+        }
+        let asymptote_top = if quad_low > F::ZERO { high.min(quad_low) } else { high };
+        if low < asymptote_top {
+            let a = self.scene.asymptote();
+            let Time::At(t) = asymptotic_time(a, asymptote_top, low) else {
+                return (Time::Never, Count::Infinite, capped);
+            };
+            time += t;
+            return match asymptotic_count(a, self.scene.orbit(), asymptote_top, low) {
+                Count::Finite(n) => (Time::At(time), Count::Finite(impacts + n), capped),
+                Count::Infinite => (Time::At(time), Count::Infinite, capped),
+            };
+        }
+        (Time::At(time), Count::Finite(impacts), capped)
+    }
+
+    /// The averaged prediction (physics.md sec. 3). Expected error: physics.md sec. 6 (preload
+    /// within 1 % for j0 <= 1; gap end -4 % to +99 % with few impacts; thresholds ~ r/2).
+    #[must_use]
+    pub fn predict(&self) -> Prediction<F> {
+        if let Some(p) = by_regime(self.scene) {
+            return p;
+        }
+        let start = self.scene.start_impulse();
+        let ends = matches!(self.scene.regime(), Regime::ZenoAccumulation | Regime::LastImpact);
+        let (threshold_part, rest_from) = match self.scene.threshold_generating() {
+            Some(end) => (Some(self.fall(start, end)), end),
+            None => (None, start),
+        };
+        let (end_time, impacts_total, cap_end) = if ends {
+            let (t_rest, n_rest, cap) = self.fall(rest_from, F::ZERO);
+            match threshold_part {
+                Some((Time::At(t), Count::Finite(n), _)) => (
+                    t_rest.seconds().map_or(Time::Never, |tr| Time::At(t + tr)),
+                    n_rest.value().map_or(Count::Infinite, |nr| Count::Finite(n + nr + F::ONE)),
+                    cap,
+                ),
+                _ => (t_rest, n_rest.value().map_or(Count::Infinite, |n| Count::Finite(n + F::ONE)), cap),
+            }
+        } else {
+            (Time::Never, Count::Infinite, false)
+        };
+        let (last_above_time, impacts_above, cap_above) = match threshold_part {
+            Some((t, n, cap)) => (
+                t,
+                n.value().map_or(Count::Infinite, |n| Count::Finite(n + F::ONE)),
+                cap,
+            ),
+            None => (end_time, impacts_total, false),
+        };
+        let mut approximations = accuracy::reduction_flags(self.scene);
+        if cap_end || cap_above {
+            approximations = approximations.with(Approximations::PANELS_CAPPED);
+        }
+        let expected = accuracy::with_reduction(
+            self.scene,
+            accuracy::averaged(self.scene, impacts_total.value()),
+        );
+        if expected.is_none() {
+            approximations = approximations.with(Approximations::OUTSIDE_VALIDITY);
+        }
+        Prediction {
+            regime: self.scene.regime(),
+            end_time,
+            last_above_time,
+            impacts_above,
+            impacts_total,
+            tier: Tier::Averaged(self.nodes),
+            approximations,
+            expected_error: expected,
+        }
+    }
+
+    /// The envelope J(t) and the averaged impact count at time `t` >= 0 (s): the inverse of
+    /// t(J), found panel by panel and then by safeguarded Newton inside the panel, to a few ULP
+    /// of ln J.
+    ///
+    /// # Errors
+    /// [`Parameter::Time`] when `t` is NaN, infinite or negative.
+    pub fn envelope(&self, t: F) -> Result<EnvelopePoint<F>, Error> {
+        let t = non_negative(t, Parameter::Time)?;
+        let scene = self.scene;
+        let start = scene.start_impulse();
+        match scene.regime() {
+            Regime::SingleImpact => {
+                return Ok(EnvelopePoint {
+                    impulse: if t > F::ZERO { F::ZERO } else { start },
+                    impacts: Count::Finite(F::ONE),
+                })
+            }
+            Regime::Periodic => {
+                let period = scene.orbit().at(start).period();
+                return Ok(EnvelopePoint {
+                    impulse: start,
+                    impacts: Count::Finite(F::ONE + (t / period).floor()),
+                });
+            }
+            _ => {}
+        }
+        let cut = self.cutoff();
+        let s_cut = if cut > F::ZERO { Some(cut.ln()) } else { None };
+        let mut s_hi = start.ln();
+        let mut elapsed = F::ZERO;
+        let mut impacts = F::ONE;
+        let width = F::from_f64(PANEL_WIDTH);
+        let mut f = |s: F| self.integrand(s);
+        for _ in 0..MAX_PANELS {
+            let mut s_lo = s_hi - width;
+            if let Some(c) = s_cut {
+                s_lo = s_lo.max(c);
+            }
+            if s_lo >= s_hi {
+                break;
+            }
+            let (dt, dn) = panel(s_lo, s_hi, self.nodes, &mut f);
+            if elapsed + dt >= t {
+                let s = self.solve_in_panel(s_lo, s_hi, t - elapsed, dt);
+                let (_, dn_part) = panel(s, s_hi, self.nodes, &mut f);
+                return Ok(EnvelopePoint {
+                    impulse: s.exp(),
+                    impacts: Count::Finite(impacts + dn_part),
+                });
+            }
+            elapsed += dt;
+            impacts += dn;
+            s_hi = s_lo;
+        }
+        // Below the cutoff: invert the asymptote in closed form.
+        let from = s_hi.exp();
+        let tau = t - elapsed;
+        let a = scene.asymptote();
+        let impulse = if a.inverse > F::ZERO {
+            let squared = from * from * (-F::TWO * a.linear * tau).exp()
+                - F::TWO * a.inverse * tau * relaxed(F::TWO * a.linear * tau);
+            if squared > F::ZERO { squared.sqrt() } else { F::ZERO }
+        } else if a.constant > F::ZERO {
+            let j = from * (-a.linear * tau).exp() - a.constant * tau * relaxed(a.linear * tau);
+            j.max(F::ZERO)
+        } else {
+            from * (-a.linear * tau).exp()
+        };
+        let more = if impulse > F::ZERO {
+            asymptotic_count(a, scene.orbit(), from, impulse)
+        } else {
+            asymptotic_count(a, scene.orbit(), from, F::ZERO)
+        };
+        Ok(EnvelopePoint {
+            impulse,
+            impacts: match more {
+                Count::Finite(n) => Count::Finite(impacts + n),
+                Count::Infinite => Count::Infinite,
+            },
+        })
+    }
+
+    /// s in [s_lo, s_hi] with integral_s^{s_hi} J/|E1| ds = goal (0 <= goal <= whole).
+    fn solve_in_panel(&self, s_lo: F, s_hi: F, goal: F, whole: F) -> F {
+        let mut f = |s: F| self.integrand(s);
+        let (mut lo, mut hi) = (s_lo, s_hi);
+        let mut s = if whole > F::ZERO {
+            s_hi - (s_hi - s_lo) * (goal / whole)
+        } else {
+            s_hi
+        };
+        for _ in 0..60 {
+            let (done, _) = panel(s, s_hi, self.nodes, &mut f);
+            let excess = done - goal;
+            if excess > F::ZERO {
+                lo = s;
+            } else {
+                hi = s;
+            }
+            let slope = f(s).0;
+            let mut next = s + excess / slope;
+            if !(next > lo && next < hi) {
+                next = (lo + hi) * F::HALF;
+            }
+            let step = (next - s).abs();
+            s = next;
+            if step <= F::from_f64(4.0) * F::EPSILON * s.abs().max(F::ONE) || hi - lo <= F::EPSILON * s.abs().max(F::ONE) {
+                break;
+            }
+        }
+        s
+    }
+
+    /// The positions of the contacts at time `t` (s) reconstructed from the envelope: the
+    /// relative x(t) = -J(t) chi(tau), tau the time since the last averaged impact
+    /// (frac(N(t) - 1) T(J)), shared between the bodies about the centre of mass. After the
+    /// bounce ends the relative position is the rest: Delta for a preload (closed), 0 for a gap.
+    ///
+    /// # Errors
+    /// [`Parameter::Time`] when `t` is NaN, infinite or negative.
+    pub fn motion(&self, t: F, bodies: &Bodies<F>) -> Result<Motion<F>, Error> {
+        let point = self.envelope(t)?;
+        let scene = self.scene;
+        let orbit = scene.orbit();
+        let relative = match point.impacts {
+            Count::Finite(n) if point.impulse > F::ZERO => {
+                let p = orbit.at(point.impulse);
+                let cycles = n - F::ONE;
+                let fraction = cycles - cycles.floor();
+                let local = if fraction > F::ZERO { fraction * p.period() } else { p.period() };
+                let local = if t <= F::ZERO { F::ZERO } else { local };
+                -(p.hypot() / (F::TWO * orbit.omega())) * (orbit.omega() * local - p.phase()).cos()
+            }
+            _ => scene.delta().min(F::ZERO),
+        };
+        let centre = free_damped(
+            orbit.omega(),
+            scene.dissipation().damping_ratio(),
+            bodies.centre,
+            bodies.centre_velocity,
+            t,
+        );
+        Ok(Motion {
+            relative,
+            body1: centre + (F::ONE - bodies.mass_fraction_1) * relative,
+            body2: centre - bodies.mass_fraction_1 * relative,
+        })
+    }
+}

@@ -1,0 +1,471 @@
+//! Closed forms: physics.md sec. 5, with the exact zeta = 0 sums.
+//!
+//! Every form returns an [`Estimate`]: the time and the relative error physics.md sec. 6 leads
+//! one to expect on this scene (`None` outside every stated validity), so a caller knows when
+//! to trust it. A form that does not apply to the scene's regime returns `None`.
+
+use crate::mechanisms::{offset_class, Asymptote, Dissipation, Offset};
+use crate::orbit::Orbit;
+use crate::prediction::{Approximations, ClosedForm, Count, Prediction, Tier, Time};
+use crate::quadrature::{panel, Compensated, Nodes};
+use crate::regime::Regime;
+use crate::{accuracy, Float, Scene};
+
+/// A closed-form time with the error to expect of it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Estimate<F> {
+    /// The time (s).
+    pub time: F,
+    /// Expected relative error (physics.md sec. 5-6), `None` when outside the stated validity.
+    pub expected_error: Option<F>,
+}
+
+/// ln(1 + z) / z for z > -1, accurate as z -> 0 (series below |z| = 1e-4).
+pub(crate) fn ln1p_ratio<F: Float>(z: F) -> F {
+    if z.abs() < F::from_f64(1e-4) {
+        F::ONE - z * (F::HALF - z * (F::ONE / F::from_f64(3.0) - z / F::from_f64(4.0)))
+    } else {
+        z.ln_1p() / z
+    }
+}
+
+/// Time for J to fall from `j1` to `j2` (0 <= j2 <= j1) on the asymptote
+/// J' = -(constant + linear J + inverse / J) (at most two terms are non-zero).
+pub(crate) fn asymptotic_time<F: Float>(a: &Asymptote<F>, j1: F, j2: F) -> Time<F> {
+    if j1 <= j2 {
+        return Time::At(F::ZERO);
+    }
+    let drop = j1 - j2;
+    if a.inverse > F::ZERO {
+        // integral of J dJ / (B J^2 + C): t_b2r, and t_b2 when B = 0.
+        let squares = drop * (j1 + j2);
+        let base = a.linear * j2 * j2 + a.inverse;
+        Time::At(squares / (F::TWO * base) * ln1p_ratio(a.linear * squares / base))
+    } else if a.constant > F::ZERO {
+        // integral of dJ / (A + B J): t_b1v, and t_b1 when B = 0.
+        let base = a.constant + a.linear * j2;
+        Time::At(drop / base * ln1p_ratio(a.linear * drop / base))
+    } else if a.linear > F::ZERO && j2 > F::ZERO {
+        Time::At((j1 / j2).ln() / a.linear)
+    } else {
+        Time::Never
+    }
+}
+
+/// Impacts while J falls from `j1` to `j2` on the asymptote: the integral of dJ / (|E1| T)
+/// with the small-J period (preload J / (Omega^2 |Delta|), gap 2 pi / Omega, Delta = 0 pi / Omega).
+pub(crate) fn asymptotic_count<F: Float>(a: &Asymptote<F>, orbit: &Orbit<F>, j1: F, j2: F) -> Count<F> {
+    if j1 <= j2 {
+        return Count::Finite(F::ZERO);
+    }
+    let omega = orbit.omega();
+    match offset_class(orbit) {
+        Offset::Preload => {
+            let k = omega * omega * orbit.delta().abs();
+            if j2 <= F::ZERO {
+                Count::Infinite
+            } else if a.constant > F::ZERO {
+                let base = a.constant + a.linear * j2;
+                let log = (j1 / j2).ln() - (a.linear * (j1 - j2) / base).ln_1p();
+                Count::Finite(k / a.constant * log)
+            } else if a.linear > F::ZERO {
+                Count::Finite(k / a.linear * (F::ONE / j2 - F::ONE / j1))
+            } else {
+                Count::Infinite
+            }
+        }
+        Offset::Gap | Offset::Grazing => {
+            let period = if offset_class(orbit) == Offset::Gap {
+                F::TWO * F::PI / omega
+            } else {
+                F::PI / omega
+            };
+            match asymptotic_time(a, j1, j2) {
+                Time::At(t) => Count::Finite(t / period),
+                Time::Never => Count::Infinite,
+            }
+        }
+    }
+}
+
+/// The inverse tangent integral Ti2(x) = integral_0^x atan(y)/y dy, x > 0: 12-point
+/// Gauss-Legendre on [0, min(x, 1/x)] (error below 1e-16: the integrand is analytic in a
+/// Bernstein ellipse of radius 4.6), and Ti2(x) = Ti2(1/x) + (pi/2) ln x above 1.
+pub(crate) fn inverse_tangent_integral<F: Float>(x: F) -> F {
+    let (inner, reflect) = if x > F::ONE { (F::ONE / x, true) } else { (x, false) };
+    let mut f = |y: F| (y.atan() / y, F::ZERO);
+    let (value, _) = panel(F::ZERO, inner, Nodes::N12, &mut f);
+    if reflect {
+        value + F::HALF * F::PI * x.ln()
+    } else {
+        value
+    }
+}
+
+/// Below this the terms atan(y) of a sum are replaced by their series tail.
+const SMALL_TERM: f64 = 1e-3;
+/// Above this ln(1/R) the sums are direct (at most ~1500 terms); below, Euler-Maclaurin.
+const DIRECT_DECAY: f64 = 0.05;
+/// Finite sums of at most this many terms are always direct.
+const DIRECT_TERMS: f64 = 256.0;
+
+/// sum_{m >= 0} atan(y R^m) for y <= SMALL_TERM: y/(1-R) - y^3/(3(1-R^3)) + y^5/(5(1-R^5)),
+/// relative error below y^6/7 (1.5e-19).
+fn small_tail<F: Float>(y: F, restitution: F, loss: F) -> F {
+    let r = restitution;
+    let r2 = r * r;
+    let y2 = y * y;
+    let geometric3 = loss * (F::ONE + r + r2);
+    let geometric5 = loss * (F::ONE + r + r2 + r2 * r + r2 * r2);
+    y / loss - y * y2 / (F::from_f64(3.0) * geometric3) + y * y2 * y2 / (F::from_f64(5.0) * geometric5)
+}
+
+/// Euler-Maclaurin for sum_{m >= 0} atan(x e^{-lambda m}) (lambda < 0.05): the integral
+/// Ti2(x)/lambda plus f(0)/2 - f'(0)/12 + f'''(0)/720; the remainder is O(lambda^5 / 30240),
+/// below 1e-12 relative.
+fn euler_maclaurin<F: Float>(x: F, decay: F) -> F {
+    // x/(1+x^2) and x(1-6x^2+x^4)/(1+x^2)^3 are symmetric under x -> 1/x: use the smaller.
+    let v = if x > F::ONE { F::ONE / x } else { x };
+    let v2 = v * v;
+    let d1 = v / (F::ONE + v2);
+    let d3 = v * (F::ONE - F::from_f64(6.0) * v2 + v2 * v2) / ((F::ONE + v2) * (F::ONE + v2) * (F::ONE + v2));
+    inverse_tangent_integral(x) / decay + x.atan() * F::HALF + decay * d1 / F::from_f64(12.0)
+        - decay * decay * decay * d3 / F::from_f64(720.0)
+}
+
+/// sum_{m=0}^{n-1} atan(x R^m) (n = `None`: the infinite sum, R < 1), x > 0.
+///
+/// Direct (compensated) while terms are large, then the series tail; Euler-Maclaurin when
+/// ln(1/R) < 0.05 and more than 256 terms are asked. Relative error: a few ULP times the
+/// number of direct terms in f64 (below 1e-12), ~1e-5 in f32 when R -> 1.
+pub(crate) fn atan_geometric_sum<F: Float>(x: F, restitution: F, loss: F, n: Option<F>) -> F {
+    if loss <= F::ZERO {
+        // R = 1: every term equals atan(x).
+        return n.map_or(F::MAX, |n| n * x.atan());
+    }
+    let decay = -(-loss).ln_1p();
+    let few = n.is_some_and(|n| n <= F::from_f64(DIRECT_TERMS));
+    if decay < F::from_f64(DIRECT_DECAY) && !few {
+        let total = euler_maclaurin(x, decay);
+        return match n {
+            None => total,
+            Some(n) => total - euler_maclaurin(x * (-decay * n).exp(), decay),
+        };
+    }
+    let small = F::from_f64(SMALL_TERM);
+    let mut sum = Compensated::new();
+    let mut y = x;
+    let mut m = F::ZERO;
+    loop {
+        if n.is_some_and(|n| m >= n) {
+            break;
+        }
+        if y < small {
+            sum.add(small_tail(y, restitution, loss));
+            if let Some(n) = n {
+                let rest = n - m;
+                sum.add(-small_tail(y * (-decay * rest).exp(), restitution, loss));
+            }
+            break;
+        }
+        sum.add(y.atan());
+        y *= restitution;
+        m += F::ONE;
+    }
+    sum.value()
+}
+
+/// Impacts with P >= P_end when impulses shrink by `factor` per impact (`decay` = ln(1/factor)):
+/// floor(ln(P0 / P_end) / decay) + 1.
+fn impacts_above_geometric<F: Float>(first: F, threshold: F, decay: F) -> F {
+    ((first / threshold).ln() / decay).floor() + F::ONE
+}
+
+impl<F: Float, D: Dissipation<F>> Scene<F, D> {
+    fn preload_scale(&self) -> Option<F> {
+        (self.delta() < F::ZERO).then(|| self.omega() * self.delta().abs())
+    }
+
+    /// t_b1 = J_B / (r Omega^2 |Delta|) (physics.md sec. 5): preload, R < 1, restitution only.
+    /// Exact as J_B -> 0; the error of linearising atan is 1 % at j0 = 0.61, 10 % at 2.1, 50 % at
+    /// 6.4 (expected error given up to j0 = 6.4). `None` unless preload with R < 1.
+    ///
+    /// ```
+    /// use contact_bounce::{Contact, Frequency, Offset, Restitution, Scene, Threshold, Undamped};
+    /// let scene = Scene::new(Contact {
+    ///     frequency: Frequency::Omega(1000.0_f64), offset: Offset::Delta(-1e-3),
+    ///     restitution: Restitution::Coefficient(0.5), closing_speed: 0.1, threshold: Threshold::None,
+    /// }, Undamped)?;
+    /// let t = scene.t_b1().unwrap().time; // J_B = 0.1, r Omega^2 |Delta| = 500
+    /// assert!((t - 0.1 / 500.0).abs() < 1e-15);
+    /// # Ok::<(), contact_bounce::Error>(())
+    /// ```
+    #[must_use]
+    pub fn t_b1(&self) -> Option<Estimate<F>> {
+        let scale = self.preload_scale()?;
+        (self.loss() > F::ZERO).then(|| {
+            let j0 = self.start_impulse() / scale;
+            Estimate {
+                time: self.start_impulse() / (self.loss() * self.omega() * scale),
+                expected_error: accuracy::atan_linearisation(j0),
+            }
+        })
+    }
+
+    /// t_b1v = (3 / (2 zeta Omega)) ln(1 + 2 zeta J_B / (3 r Omega |Delta|)) (physics.md sec. 5):
+    /// preload, R < 1, viscous. Within 2.5 % for j0 <= 1, R in [0.05, 0.999], zeta <= 0.5.
+    /// Equals t_b1 at zeta = 0. `None` unless preload with R < 1.
+    #[must_use]
+    pub fn t_b1v(&self) -> Option<Estimate<F>> {
+        let scale = self.preload_scale()?;
+        if self.loss() <= F::ZERO {
+            return None;
+        }
+        let zeta = self.dissipation().damping_ratio();
+        let omega = self.omega();
+        let start = self.start_impulse();
+        let z = F::TWO * zeta * start / (F::from_f64(3.0) * self.loss() * scale);
+        // (3/(2 zeta Omega)) ln(1 + z) = t_b1 * ln(1+z)/z: no division by zeta.
+        let t_b1 = start / (self.loss() * omega * scale);
+        Some(Estimate {
+            time: t_b1 * ln1p_ratio(z),
+            expected_error: accuracy::t_b1v(start / scale, self.restitution(), zeta),
+        })
+    }
+
+    /// t_b2 = J_B^2 / (8 zeta Omega^3 Delta^2) (physics.md sec. 5): gap, viscous, R = 1.
+    /// Rarely within 10 %: needs J_B << 0.3 Omega |Delta| and many impacts (10 % given for
+    /// j0 <= 0.03). `None` unless a gap with zeta > 0.
+    #[must_use]
+    pub fn t_b2(&self) -> Option<Estimate<F>> {
+        let zeta = self.dissipation().damping_ratio();
+        if self.delta() <= F::ZERO || zeta <= F::ZERO {
+            return None;
+        }
+        let q = self.orbit().offset_impulse();
+        let start = self.start_impulse();
+        let omega = self.omega();
+        Some(Estimate {
+            time: start * start / (F::TWO * zeta * omega * q * q),
+            expected_error: accuracy::t_b2(start / (omega * self.delta())),
+        })
+    }
+
+    /// t_b2r = (pi / (r Omega)) ln(1 + r J_B^2 / (8 pi zeta Omega^2 Delta^2)) (physics.md
+    /// sec. 5): gap, restitution and viscous. Equals t_b2 as r -> 0. `None` unless a gap with
+    /// zeta > 0.
+    #[must_use]
+    pub fn t_b2r(&self) -> Option<Estimate<F>> {
+        let t_b2 = self.t_b2()?;
+        let zeta = self.dissipation().damping_ratio();
+        let q = self.orbit().offset_impulse();
+        let start = self.start_impulse();
+        let z = self.loss() * start * start / (F::TWO * F::PI * zeta * q * q);
+        Some(Estimate {
+            time: t_b2.time * ln1p_ratio(z),
+            expected_error: t_b2.expected_error,
+        })
+    }
+
+    /// Delta = 0 (physics.md sec. 5): t = ln(J_B / J_end) / ((r/pi + zeta) Omega), the averaged
+    /// exponential to the threshold. Off by about r/2 against the discrete impacts (sec. 6);
+    /// the closed tier uses the exact discrete form instead. `None` unless Delta = 0 with a
+    /// threshold and some loss.
+    #[must_use]
+    pub fn t_grazing(&self) -> Option<Estimate<F>> {
+        if self.delta() != F::ZERO {
+            return None;
+        }
+        let end = self.threshold_generating()?;
+        let zeta = self.dissipation().damping_ratio();
+        let rate = (self.loss() / F::PI + zeta) * self.omega();
+        (rate > F::ZERO).then(|| Estimate {
+            time: (self.start_impulse() / end).ln() / rate,
+            expected_error: Some(accuracy::discreteness(self.loss())),
+        })
+    }
+
+    /// The exact accumulation time of an undamped preload (physics.md sec. 5):
+    /// sum_{n>=0} (2/Omega) atan(R^{n+1} v0 / (Omega |Delta|)), summed directly or by
+    /// Euler-Maclaurin (see [`Scene::undamped_flights_until`]). Its bouncing-ball limit is
+    /// t_b1. `None` unless preload with R < 1 (its value ignores any damping).
+    #[must_use]
+    pub fn undamped_accumulation_time(&self) -> Option<F> {
+        let scale = self.preload_scale()?;
+        (self.loss() > F::ZERO).then(|| {
+            let x = self.restitution() * self.closing_speed() / scale;
+            F::TWO / self.omega() * atan_geometric_sum(x, self.restitution(), self.loss(), None)
+        })
+    }
+
+    /// The exact time of impact `n` (n >= 0, a whole number) without damping between impacts:
+    /// the sum of the first n flights (2/Omega) atan2(R^{m+1} v0, -Omega Delta), any Delta.
+    /// Relative error below 1e-12 in f64.
+    #[must_use]
+    pub fn undamped_flights_until(&self, n: F) -> F {
+        if n <= F::ZERO {
+            return F::ZERO;
+        }
+        let omega = self.omega();
+        let delta = self.delta();
+        let r = self.restitution();
+        if delta == F::ZERO {
+            return n * F::PI / omega;
+        }
+        let x = r * self.closing_speed() / (omega * delta.abs());
+        let sum = atan_geometric_sum(x, r, self.loss(), Some(n));
+        if delta < F::ZERO {
+            F::TWO / omega * sum
+        } else {
+            F::TWO / omega * (n * F::PI - sum)
+        }
+    }
+}
+
+/// A prediction that needs no model: single impact or periodic.
+pub(crate) fn by_regime<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Option<Prediction<F>> {
+    let base = Prediction {
+        regime: scene.regime(),
+        end_time: Time::Never,
+        last_above_time: Time::Never,
+        impacts_above: Count::Infinite,
+        impacts_total: Count::Infinite,
+        tier: Tier::Regime,
+        approximations: accuracy::reduction_flags(scene),
+        expected_error: Some(F::ZERO),
+    };
+    match scene.regime() {
+        Regime::SingleImpact => Some(Prediction {
+            end_time: Time::At(F::ZERO),
+            last_above_time: Time::At(F::ZERO),
+            impacts_above: Count::Finite(F::ONE),
+            impacts_total: Count::Finite(F::ONE),
+            ..base
+        }),
+        Regime::Periodic => Some(base),
+        _ => None,
+    }
+}
+
+/// The closed-form tier: the exact discrete sums where they exist (no damping between impacts,
+/// or Delta = 0 without a kernel), else the closed forms of sec. 5 (t_b1v, t_b2r and the
+/// small-impulse asymptote they come from).
+pub(crate) fn predict<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Prediction<F> {
+    if let Some(p) = by_regime(scene) {
+        return p;
+    }
+    let dissipation = scene.dissipation();
+    if !dissipation.dissipates() || (scene.delta() == F::ZERO && !dissipation.has_kernel()) {
+        return exact_discrete(scene);
+    }
+    let asymptote = scene.asymptote();
+    let start = scene.start_impulse();
+    let (form, expected) = match (offset_class(scene.orbit()), dissipation.has_kernel()) {
+        (Offset::Preload, false) if scene.loss() > F::ZERO => {
+            (ClosedForm::Tb1v, scene.t_b1v().and_then(|e| e.expected_error))
+        }
+        (Offset::Gap, false) => (
+            if scene.loss() > F::ZERO { ClosedForm::Tb2r } else { ClosedForm::Tb2 },
+            scene.t_b2().and_then(|e| e.expected_error),
+        ),
+        _ => (ClosedForm::Asymptotic, None),
+    };
+    let end_time = asymptotic_time(asymptote, start, F::ZERO);
+    let impacts_total = add_one(asymptotic_count(asymptote, scene.orbit(), start, F::ZERO));
+    let (last_above_time, impacts_above) = match scene.threshold_generating() {
+        Some(end) => (
+            asymptotic_time(asymptote, start, end).min_with(end_time),
+            add_one(asymptotic_count(asymptote, scene.orbit(), start, end)).min_with(impacts_total),
+        ),
+        None => (end_time, impacts_total),
+    };
+    let mut approximations = accuracy::reduction_flags(scene);
+    if expected.is_none() {
+        approximations = approximations.with(Approximations::OUTSIDE_VALIDITY);
+    }
+    Prediction {
+        regime: scene.regime(),
+        end_time,
+        last_above_time,
+        impacts_above,
+        impacts_total,
+        tier: Tier::Closed(form),
+        approximations,
+        expected_error: accuracy::with_reduction(scene, expected),
+    }
+}
+
+fn add_one<F: Float>(count: Count<F>) -> Count<F> {
+    match count {
+        Count::Finite(n) => Count::Finite(n + F::ONE),
+        Count::Infinite => Count::Infinite,
+    }
+}
+
+impl<F: Float> Time<F> {
+    /// The earlier of two times.
+    pub(crate) fn min_with(self, other: Self) -> Self {
+        match (self, other) {
+            (Self::At(a), Self::At(b)) => Self::At(a.min(b)),
+            (Self::At(a), Self::Never) | (Self::Never, Self::At(a)) => Self::At(a),
+            (Self::Never, Self::Never) => Self::Never,
+        }
+    }
+}
+
+impl<F: Float> Count<F> {
+    /// The smaller of two counts.
+    pub(crate) fn min_with(self, other: Self) -> Self {
+        match (self, other) {
+            (Self::Finite(a), Self::Finite(b)) => Self::Finite(a.min(b)),
+            (Self::Finite(a), Self::Infinite) | (Self::Infinite, Self::Finite(a)) => Self::Finite(a),
+            (Self::Infinite, Self::Infinite) => Self::Infinite,
+        }
+    }
+}
+
+/// Exact discrete impacts: zeta = 0 (any Delta; impulses x R per impact) or Delta = 0 with
+/// viscous damping (flights pi / Omega_d, impulses x R exp(-zeta Omega pi / Omega_d)).
+fn exact_discrete<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Prediction<F> {
+    let zeta = scene.dissipation().damping_ratio();
+    let omega = scene.omega();
+    let loss_decay = -(-scene.loss()).ln_1p();
+    let grazing_damped = scene.delta() == F::ZERO && zeta > F::ZERO;
+    // Per-impact decay of the impulse, and (Delta = 0 only) the constant flight time.
+    let (decay, grazing_flight) = if scene.delta() == F::ZERO {
+        let damped = omega * (F::ONE - zeta * zeta).sqrt();
+        (loss_decay + zeta * omega * F::PI / damped, Some(F::PI / damped))
+    } else {
+        (loss_decay, None)
+    };
+    let time_of = |n: F| match grazing_flight {
+        Some(flight) => n * flight,
+        None => scene.undamped_flights_until(n),
+    };
+    let end_time = match scene.regime() {
+        Regime::ZenoAccumulation => scene.undamped_accumulation_time().map_or(Time::Never, Time::At),
+        _ => Time::Never,
+    };
+    let (last_above_time, impacts_above) = match scene.threshold_impulse() {
+        Some(threshold) => {
+            let n = impacts_above_geometric(scene.first_impulse(), threshold, decay);
+            (Time::At(time_of(n - F::ONE)), Count::Finite(n))
+        }
+        None => (end_time, Count::Infinite),
+    };
+    Prediction {
+        regime: scene.regime(),
+        end_time,
+        last_above_time,
+        impacts_above,
+        impacts_total: Count::Infinite,
+        tier: Tier::Closed(if grazing_damped || scene.delta() == F::ZERO {
+            ClosedForm::Grazing
+        } else {
+            ClosedForm::Undamped
+        }),
+        approximations: accuracy::reduction_flags(scene),
+        expected_error: accuracy::with_reduction(scene, Some(accuracy::exact_sum::<F>())),
+    }
+}

@@ -1,0 +1,230 @@
+//! The one error type: every invalid input is named, with the reason.
+
+use core::fmt;
+
+/// A scene parameter, as named in errors.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[non_exhaustive]
+pub enum Parameter {
+    /// Natural frequency Omega (rad/s).
+    Omega,
+    /// Effective mass (kg).
+    Mass,
+    /// Effective stiffness (N/m).
+    Stiffness,
+    /// Gap (> 0) or preload (< 0) Delta (m).
+    Delta,
+    /// Preload force (N).
+    PreloadForce,
+    /// Coefficient of restitution R.
+    Restitution,
+    /// r = 1 - R.
+    OneMinusRestitution,
+    /// Viscous damping ratio zeta.
+    DampingRatio,
+    /// Relaxation kernel amplitude kappa (1/s^3).
+    KernelAmplitude,
+    /// Relaxation kernel time constant tau (s).
+    KernelTimeConstant,
+    /// Relative tolerance of the hereditary harmonic sum.
+    HarmonicTolerance,
+    /// Closing speed v0 (m/s).
+    ClosingSpeed,
+    /// Threshold as a fraction of the first impulse.
+    ThresholdFraction,
+    /// Threshold as an absolute impulse per unit reduced mass (m/s).
+    ThresholdImpulse,
+    /// Mass of body 1 (kg).
+    Mass1,
+    /// Stiffness of body 1 (N/m).
+    Stiffness1,
+    /// Damping coefficient of body 1 (N s/m).
+    Damping1,
+    /// Mass of body 2 (kg).
+    Mass2,
+    /// Stiffness of body 2 (N/m).
+    Stiffness2,
+    /// Damping coefficient of body 2 (N s/m).
+    Damping2,
+    /// Relative tolerance asked of [`Method::Auto`](crate::Method::Auto).
+    Tolerance,
+    /// Safety margin factor of a debounce window.
+    MarginFactor,
+    /// Extra time added to a debounce window (s).
+    MarginExtra,
+    /// Sampling (tick) period (s).
+    SamplePeriod,
+    /// A time argument (s).
+    Time,
+    /// The threshold below which an impact no longer counts.
+    Threshold,
+}
+
+impl Parameter {
+    /// The parameter's name as written in errors (and in the JSON scene keys where one exists).
+    #[must_use]
+    pub const fn name(self) -> &'static str {
+        match self {
+            Self::Omega => "omega",
+            Self::Mass => "mass",
+            Self::Stiffness => "stiffness",
+            Self::Delta => "gap",
+            Self::PreloadForce => "preload_force",
+            Self::Restitution => "restitution",
+            Self::OneMinusRestitution => "one_minus_restitution",
+            Self::DampingRatio => "damping_ratio",
+            Self::KernelAmplitude => "kernel.kappa",
+            Self::KernelTimeConstant => "kernel.tau",
+            Self::HarmonicTolerance => "kernel.tolerance",
+            Self::ClosingSpeed => "closing_speed",
+            Self::ThresholdFraction => "threshold_fraction",
+            Self::ThresholdImpulse => "threshold_impulse",
+            Self::Mass1 => "two_body.m1",
+            Self::Stiffness1 => "two_body.c1",
+            Self::Damping1 => "two_body.d1",
+            Self::Mass2 => "two_body.m2",
+            Self::Stiffness2 => "two_body.c2",
+            Self::Damping2 => "two_body.d2",
+            Self::Tolerance => "tolerance",
+            Self::MarginFactor => "margin_factor",
+            Self::MarginExtra => "margin_extra",
+            Self::SamplePeriod => "sample_period",
+            Self::Time => "time",
+            Self::Threshold => "threshold",
+        }
+    }
+}
+
+impl fmt::Display for Parameter {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// Why a parameter was rejected.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[non_exhaustive]
+pub enum Reason {
+    /// NaN.
+    NotANumber,
+    /// Positive or negative infinity.
+    Infinite,
+    /// Must be > 0.
+    NotPositive,
+    /// Must be >= 0.
+    Negative,
+    /// Outside its allowed interval (the variant's docs give it).
+    OutOfRange,
+    /// The regime has no end of its own, so it needs a threshold, and none was given.
+    Required,
+    /// Valid alone, but its combination with the other parameters overflows or loses all
+    /// precision (e.g. Omega^2 |Delta| overflowing).
+    Overflow,
+    /// The threshold is at or above the first impulse (1 + R) v0: no impact would count.
+    AboveFirstImpulse,
+    /// A preload force needs the stiffness (give mass and stiffness, not Omega alone).
+    NeedsStiffness,
+    /// The prediction has no end (an endless regime), so no finite window exists.
+    Endless,
+}
+
+impl fmt::Display for Reason {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Self::NotANumber => "is NaN",
+            Self::Infinite => "is infinite",
+            Self::NotPositive => "must be > 0",
+            Self::Negative => "must be >= 0",
+            Self::OutOfRange => "is out of range",
+            Self::Required => "is required: this regime never ends by itself",
+            Self::Overflow => "overflows in combination with the other parameters",
+            Self::AboveFirstImpulse => "must be below the first impulse (1 + R) v0",
+            Self::NeedsStiffness => "needs the stiffness: give mass and stiffness, not omega alone",
+            Self::Endless => "is endless: the bounce never ends, so no finite window exists",
+        })
+    }
+}
+
+/// An invalid input: which parameter, and why.
+///
+/// ```
+/// use contact_bounce::{Error, Parameter, Reason};
+/// let e = Error::new(Parameter::Restitution, Reason::OutOfRange);
+/// assert_eq!(e.parameter(), Parameter::Restitution);
+/// assert_eq!(format!("{e}"), "restitution is out of range");
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Error {
+    parameter: Parameter,
+    reason: Reason,
+}
+
+impl Error {
+    /// Builds an error.
+    #[must_use]
+    pub const fn new(parameter: Parameter, reason: Reason) -> Self {
+        Self { parameter, reason }
+    }
+    /// The offending parameter.
+    #[must_use]
+    pub const fn parameter(&self) -> Parameter {
+        self.parameter
+    }
+    /// Why it was rejected.
+    #[must_use]
+    pub const fn reason(&self) -> Reason {
+        self.reason
+    }
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{} {}", self.parameter, self.reason)
+    }
+}
+
+impl core::error::Error for Error {}
+
+/// Checks that a value is finite (not NaN, not infinite).
+pub(crate) fn finite<F: crate::Float>(value: F, parameter: Parameter) -> Result<F, Error> {
+    if value.is_finite() {
+        Ok(value)
+    } else if value == value {
+        Err(Error::new(parameter, Reason::Infinite))
+    } else {
+        Err(Error::new(parameter, Reason::NotANumber))
+    }
+}
+
+/// Checks that a value is finite and > 0.
+pub(crate) fn positive<F: crate::Float>(value: F, parameter: Parameter) -> Result<F, Error> {
+    let value = finite(value, parameter)?;
+    if value > F::ZERO {
+        Ok(value)
+    } else {
+        Err(Error::new(parameter, Reason::NotPositive))
+    }
+}
+
+/// Checks that a value is finite and >= 0.
+pub(crate) fn non_negative<F: crate::Float>(value: F, parameter: Parameter) -> Result<F, Error> {
+    let value = finite(value, parameter)?;
+    if value >= F::ZERO {
+        Ok(value)
+    } else {
+        Err(Error::new(parameter, Reason::Negative))
+    }
+}
+
+/// Checks that a derived quantity is finite and > 0 (else the combination overflowed or
+/// underflowed), blaming `parameter`.
+pub(crate) fn derived<F: crate::Float>(value: F, parameter: Parameter) -> Result<F, Error> {
+    if value.is_finite() && value > F::ZERO {
+        Ok(value)
+    } else {
+        Err(Error::new(parameter, Reason::Overflow))
+    }
+}

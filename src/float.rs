@@ -1,0 +1,389 @@
+//! The small float trait the model is generic over, with its math backends.
+//!
+//! One code path serves `f32` and `f64`. The trait is sealed: the numerical choices in this
+//! crate (series cut-offs, tail thresholds, tolerances) are tuned for exactly these two types.
+//!
+//! # Backends (by precedence, never mutually exclusive)
+//! - `f64`: always [`libm`].
+//! - `f32`: [`micromath`] when the `micromath` feature is on (small and fast: sqrt relative error
+//!   up to ~6 %, atan2 absolute error up to ~3e-3 rad, per `docs/embedded.md`; `ln_1p` still
+//!   comes from libm, which micromath lacks), otherwise [`libm`] (correctly rounded to within
+//!   1-2 ULP).
+//!
+//! Enabling `micromath` changes `f32` results by up to the errors above; it never changes `f64`.
+
+use core::fmt::Debug;
+use core::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
+
+use crate::quadrature::table;
+
+mod sealed {
+    pub trait Sealed {}
+    impl Sealed for f32 {}
+    impl Sealed for f64 {}
+}
+
+/// A floating-point type the model can run in: `f32` or `f64` (sealed).
+///
+/// Every function states the backend it uses in the module docs; all are total (they return
+/// NaN or infinity for out-of-domain input rather than panic), and the model never calls them
+/// outside their domain after a [`Scene`](crate::Scene) has been validated.
+pub trait Float:
+    sealed::Sealed
+    + 'static
+    + Copy
+    + Debug
+    + PartialOrd
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+    + AddAssign
+    + SubAssign
+    + MulAssign
+{
+    /// 0.
+    const ZERO: Self;
+    /// 1.
+    const ONE: Self;
+    /// 2.
+    const TWO: Self;
+    /// 1/2.
+    const HALF: Self;
+    /// pi.
+    const PI: Self;
+    /// Machine epsilon.
+    const EPSILON: Self;
+    /// Largest finite value.
+    const MAX: Self;
+    /// Smallest positive normal value.
+    const MIN_POSITIVE: Self;
+    /// Below this |y| the model evaluates 1 - sin(y)/y by its Taylor series (physics.md sec. 3:
+    /// 0.05 in f64, 0.5 in f32), where the direct form cancels.
+    const SINC_SERIES_LIMIT: Self;
+    /// A relative size below which an asymptotic small-impulse tail is exact to rounding
+    /// (about the cube root of epsilon: 6e-6 in f64, 5e-3 in f32).
+    const TAIL_CUTOFF: Self;
+
+    /// Converts an `f64` (rounds to nearest for `f32`).
+    fn from_f64(x: f64) -> Self;
+    /// Converts to `f64` (exact).
+    fn to_f64(self) -> f64;
+    /// Converts a count (rounds to nearest for `f32` above 2^24).
+    fn from_u32(n: u32) -> Self;
+    /// The Gauss-Legendre rule of `n` points (n in 2, 4, 6, 8, 10, 12, 16, 20), positive half.
+    fn gauss_legendre_half(n: crate::Nodes) -> &'static [(Self, Self)];
+
+    /// |x|.
+    fn abs(self) -> Self;
+    /// Square root.
+    fn sqrt(self) -> Self;
+    /// Natural logarithm.
+    fn ln(self) -> Self;
+    /// ln(1 + x), accurate for small x.
+    fn ln_1p(self) -> Self;
+    /// e^x.
+    fn exp(self) -> Self;
+    /// Arc tangent.
+    fn atan(self) -> Self;
+    /// Four-quadrant arc tangent of self / x.
+    fn atan2(self, x: Self) -> Self;
+    /// Sine.
+    fn sin(self) -> Self;
+    /// Cosine.
+    fn cos(self) -> Self;
+    /// sqrt(self^2 + y^2) without undue overflow.
+    fn hypot(self, y: Self) -> Self;
+    /// e^x - 1, accurate for small x (libm for both types).
+    fn exp_m1(self) -> Self;
+    /// Largest integer not above self.
+    fn floor(self) -> Self;
+    /// Smallest integer not below self.
+    fn ceil(self) -> Self;
+    /// `self` rounded up to a `u32`, or `None` if NaN, negative or above `u32::MAX`.
+    fn ceil_u32(self) -> Option<u32>;
+    /// True unless NaN or infinite.
+    fn is_finite(self) -> bool;
+
+    /// The larger of two (NaN-free inputs).
+    #[inline]
+    fn max(self, other: Self) -> Self {
+        if self > other {
+            self
+        } else {
+            other
+        }
+    }
+    /// The smaller of two (NaN-free inputs).
+    #[inline]
+    fn min(self, other: Self) -> Self {
+        if self < other {
+            self
+        } else {
+            other
+        }
+    }
+}
+
+/// Converts an `f64` table to `f32` at compile time.
+const fn narrow<const N: usize>(wide: [(f64, f64); N]) -> [(f32, f32); N] {
+    let mut out = [(0.0f32, 0.0f32); N];
+    let mut i = 0;
+    while i < N {
+        // Rounding a 21-digit constant to the nearest f32 is the intent here.
+        #[allow(clippy::cast_possible_truncation)]
+        {
+            out[i] = (wide[i].0 as f32, wide[i].1 as f32);
+        }
+        i += 1;
+    }
+    out
+}
+
+const fn same<const N: usize>(wide: [(f64, f64); N]) -> [(f64, f64); N] {
+    wide
+}
+
+macro_rules! select_rule {
+    ($n:expr, $ty:ty, $conv:path) => {{
+        match $n {
+            crate::Nodes::N2 => {
+                const R: &[($ty, $ty)] = &$conv(table::GL2);
+                R
+            }
+            crate::Nodes::N4 => {
+                const R: &[($ty, $ty)] = &$conv(table::GL4);
+                R
+            }
+            crate::Nodes::N6 => {
+                const R: &[($ty, $ty)] = &$conv(table::GL6);
+                R
+            }
+            crate::Nodes::N8 => {
+                const R: &[($ty, $ty)] = &$conv(table::GL8);
+                R
+            }
+            crate::Nodes::N10 => {
+                const R: &[($ty, $ty)] = &$conv(table::GL10);
+                R
+            }
+            crate::Nodes::N12 => {
+                const R: &[($ty, $ty)] = &$conv(table::GL12);
+                R
+            }
+            crate::Nodes::N16 => {
+                const R: &[($ty, $ty)] = &$conv(table::GL16);
+                R
+            }
+            crate::Nodes::N20 => {
+                const R: &[($ty, $ty)] = &$conv(table::GL20);
+                R
+            }
+        }
+    }};
+}
+
+impl Float for f64 {
+    const ZERO: Self = 0.0;
+    const ONE: Self = 1.0;
+    const TWO: Self = 2.0;
+    const HALF: Self = 0.5;
+    const PI: Self = core::f64::consts::PI;
+    const EPSILON: Self = f64::EPSILON;
+    const MAX: Self = f64::MAX;
+    const MIN_POSITIVE: Self = f64::MIN_POSITIVE;
+    const SINC_SERIES_LIMIT: Self = 0.05;
+    const TAIL_CUTOFF: Self = 6e-6;
+
+    #[inline]
+    fn from_f64(x: f64) -> Self {
+        x
+    }
+    #[inline]
+    fn to_f64(self) -> f64 {
+        self
+    }
+    #[inline]
+    fn from_u32(n: u32) -> Self {
+        f64::from(n)
+    }
+    #[inline]
+    fn gauss_legendre_half(n: crate::Nodes) -> &'static [(Self, Self)] {
+        select_rule!(n, f64, same)
+    }
+    #[inline]
+    fn abs(self) -> Self {
+        libm::fabs(self)
+    }
+    #[inline]
+    fn sqrt(self) -> Self {
+        libm::sqrt(self)
+    }
+    #[inline]
+    fn ln(self) -> Self {
+        libm::log(self)
+    }
+    #[inline]
+    fn ln_1p(self) -> Self {
+        libm::log1p(self)
+    }
+    #[inline]
+    fn exp(self) -> Self {
+        libm::exp(self)
+    }
+    #[inline]
+    fn atan(self) -> Self {
+        libm::atan(self)
+    }
+    #[inline]
+    fn atan2(self, x: Self) -> Self {
+        libm::atan2(self, x)
+    }
+    #[inline]
+    fn sin(self) -> Self {
+        libm::sin(self)
+    }
+    #[inline]
+    fn cos(self) -> Self {
+        libm::cos(self)
+    }
+    #[inline]
+    fn hypot(self, y: Self) -> Self {
+        libm::hypot(self, y)
+    }
+    #[inline]
+    fn exp_m1(self) -> Self {
+        libm::expm1(self)
+    }
+    #[inline]
+    fn floor(self) -> Self {
+        libm::floor(self)
+    }
+    #[inline]
+    fn ceil(self) -> Self {
+        libm::ceil(self)
+    }
+    fn ceil_u32(self) -> Option<u32> {
+        let up = libm::ceil(self);
+        if up >= 0.0 && up <= f64::from(u32::MAX) {
+            // In range and integral: the conversion is exact.
+            #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+            let n = up as u32;
+            Some(n)
+        } else {
+            None
+        }
+    }
+    #[inline]
+    fn is_finite(self) -> bool {
+        f64::is_finite(self)
+    }
+}
+
+/// Calls micromath when the feature is on, libm otherwise.
+macro_rules! f32_backend {
+    ($micromath:ident, $libm:ident $(, $arg:expr)*) => {{
+        #[cfg(feature = "micromath")]
+        {
+            micromath::F32Ext::$micromath($($arg),*)
+        }
+        #[cfg(not(feature = "micromath"))]
+        {
+            libm::$libm($($arg),*)
+        }
+    }};
+}
+
+impl Float for f32 {
+    const ZERO: Self = 0.0;
+    const ONE: Self = 1.0;
+    const TWO: Self = 2.0;
+    const HALF: Self = 0.5;
+    const PI: Self = core::f32::consts::PI;
+    const EPSILON: Self = f32::EPSILON;
+    const MAX: Self = f32::MAX;
+    const MIN_POSITIVE: Self = f32::MIN_POSITIVE;
+    const SINC_SERIES_LIMIT: Self = 0.5;
+    const TAIL_CUTOFF: Self = 5e-3;
+
+    #[inline]
+    fn from_f64(x: f64) -> Self {
+        #[allow(clippy::cast_possible_truncation)]
+        let narrowed = x as f32;
+        narrowed
+    }
+    #[inline]
+    fn to_f64(self) -> f64 {
+        f64::from(self)
+    }
+    #[inline]
+    fn from_u32(n: u32) -> Self {
+        #[allow(clippy::cast_precision_loss)]
+        let rounded = n as f32;
+        rounded
+    }
+    #[inline]
+    fn gauss_legendre_half(n: crate::Nodes) -> &'static [(Self, Self)] {
+        select_rule!(n, f32, narrow)
+    }
+    #[inline]
+    fn abs(self) -> Self {
+        libm::fabsf(self)
+    }
+    #[inline]
+    fn sqrt(self) -> Self {
+        f32_backend!(sqrt, sqrtf, self)
+    }
+    #[inline]
+    fn ln(self) -> Self {
+        f32_backend!(ln, logf, self)
+    }
+    #[inline]
+    fn ln_1p(self) -> Self {
+        libm::log1pf(self)
+    }
+    #[inline]
+    fn exp(self) -> Self {
+        f32_backend!(exp, expf, self)
+    }
+    #[inline]
+    fn atan(self) -> Self {
+        f32_backend!(atan, atanf, self)
+    }
+    #[inline]
+    fn atan2(self, x: Self) -> Self {
+        f32_backend!(atan2, atan2f, self, x)
+    }
+    #[inline]
+    fn sin(self) -> Self {
+        f32_backend!(sin, sinf, self)
+    }
+    #[inline]
+    fn cos(self) -> Self {
+        f32_backend!(cos, cosf, self)
+    }
+    #[inline]
+    fn hypot(self, y: Self) -> Self {
+        f32_backend!(hypot, hypotf, self, y)
+    }
+    #[inline]
+    fn exp_m1(self) -> Self {
+        libm::expm1f(self)
+    }
+    #[inline]
+    fn floor(self) -> Self {
+        libm::floorf(self)
+    }
+    #[inline]
+    fn ceil(self) -> Self {
+        libm::ceilf(self)
+    }
+    fn ceil_u32(self) -> Option<u32> {
+        f64::from(self).ceil_u32()
+    }
+    #[inline]
+    fn is_finite(self) -> bool {
+        f32::is_finite(self)
+    }
+}

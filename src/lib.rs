@@ -1,0 +1,54 @@
+#![doc = include_str!("../README.md")]
+#![no_std]
+#![forbid(unsafe_code)]
+#![deny(missing_docs)]
+#![warn(
+    clippy::pedantic,
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::panic,
+    clippy::indexing_slicing,
+    clippy::as_conversions
+)]
+#![allow(
+    clippy::module_name_repetitions,
+    clippy::similar_names,
+    clippy::many_single_char_names,
+    clippy::doc_markdown,
+    clippy::must_use_candidate,
+    clippy::float_cmp,
+    clippy::suboptimal_flops,
+    clippy::missing_errors_doc
+)]
+
+mod accuracy;
+mod averaged;
+mod closed;
+mod error;
+mod float;
+mod map;
+mod mechanisms;
+mod method;
+mod orbit;
+mod prediction;
+mod quadrature;
+mod regime;
+mod scene;
+mod window;
+
+pub use averaged::{Averaged, Bodies, EnvelopePoint, Motion};
+pub use closed::Estimate;
+pub use error::{Error, Parameter, Reason};
+pub use float::Float;
+pub use map::DEFAULT_MAX_IMPACTS;
+pub use mechanisms::{
+    restitution_rate, AnyDissipation, Asymptote, Dissipation, HarmonicSum, Hereditary, Undamped,
+    Viscous,
+};
+pub use method::{Method, Tolerance};
+pub use orbit::{Orbit, OrbitPoint};
+pub use prediction::{Approximations, ClosedForm, Count, Prediction, Tier, Time};
+pub use quadrature::Nodes;
+pub use regime::Regime;
+pub use scene::{Contact, Frequency, Offset, Reduction, Restitution, Scene, Threshold, TwoBody};
+pub use window::{preload_bounce_time, window_ticks, LeadingOrder, Margin, Window};

@@ -1,0 +1,173 @@
+//! Dissipation mechanisms and the averaged rate E1(J): physics.md sec. 3.
+//!
+//! Mechanisms add: E1 = restitution + viscous + hereditary. Restitution is part of every
+//! [`Scene`](crate::Scene); the others are types implementing [`Dissipation`], so a scene
+//! carries exactly the mechanisms it has and **a mechanism the scene lacks costs no flash and
+//! no cycles**: a `Scene<f32, Undamped>` never instantiates the viscous or hereditary code (and
+//! so never links `sin`). Combine mechanisms with a tuple, `(Viscous<F>, Hereditary<F>)`; pick
+//! them at run time with [`AnyDissipation`] (= `(Option<Viscous<F>>, Option<Hereditary<F>>)`).
+
+mod hereditary;
+pub(crate) mod restitution;
+mod viscous;
+
+pub use hereditary::{HarmonicSum, Hereditary};
+pub use restitution::restitution_rate;
+pub use viscous::Viscous;
+
+use core::fmt::Debug;
+
+use crate::orbit::{Orbit, OrbitPoint};
+use crate::Float;
+
+pub(crate) mod sealed {
+    pub trait Sealed {}
+}
+
+/// The small-impulse asymptote of an averaged rate: E1(J) -> -(constant + linear J + inverse / J)
+/// as J -> 0 (physics.md sec. 4, "small-J limits of E1"). Each mechanism contributes to one
+/// term, depending on the sign of Delta.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Asymptote<F> {
+    /// The J-independent part (m/s^2): restitution with a preload.
+    pub constant: F,
+    /// The part linear in J (1/s): viscous with a preload; restitution in a gap or at Delta = 0.
+    pub linear: F,
+    /// The part in 1/J (m^2/s^3): viscous or hereditary in a gap.
+    pub inverse: F,
+}
+
+impl<F: Float> Asymptote<F> {
+    /// No contribution.
+    pub const fn zero() -> Self {
+        Self {
+            constant: F::ZERO,
+            linear: F::ZERO,
+            inverse: F::ZERO,
+        }
+    }
+    /// Sum of two asymptotes.
+    #[must_use]
+    pub fn plus(self, other: Self) -> Self {
+        Self {
+            constant: self.constant + other.constant,
+            linear: self.linear + other.linear,
+            inverse: self.inverse + other.inverse,
+        }
+    }
+    /// -E1 on the asymptote at impulse `impulse` (m/s^2, >= 0).
+    #[must_use]
+    pub fn magnitude(&self, impulse: F) -> F {
+        self.constant + self.linear * impulse + self.inverse / impulse
+    }
+}
+
+/// A dissipation mechanism acting between impacts (sealed: implemented by [`Undamped`],
+/// [`Viscous`], [`Hereditary`], tuples and `Option`s of them).
+pub trait Dissipation<F: Float>: sealed::Sealed + Copy + Debug {
+    /// The viscous damping ratio zeta (0 without viscous damping): it decides the
+    /// single-impact regime (zeta >= 1 with Delta >= 0).
+    fn damping_ratio(&self) -> F;
+    /// True when energy is lost between impacts.
+    fn dissipates(&self) -> bool;
+    /// True when a hereditary kernel is present.
+    fn has_kernel(&self) -> bool;
+    /// This mechanism's contribution to E1(J) at an orbit point (m/s^2, <= 0).
+    fn rate(&self, point: &OrbitPoint<F>) -> F;
+    /// This mechanism's small-impulse asymptote on `orbit`.
+    fn asymptote(&self, orbit: &Orbit<F>) -> Asymptote<F>;
+}
+
+/// No dissipation between impacts: restitution only.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Undamped;
+
+impl sealed::Sealed for Undamped {}
+
+impl<F: Float> Dissipation<F> for Undamped {
+    #[inline]
+    fn damping_ratio(&self) -> F {
+        F::ZERO
+    }
+    #[inline]
+    fn dissipates(&self) -> bool {
+        false
+    }
+    #[inline]
+    fn has_kernel(&self) -> bool {
+        false
+    }
+    #[inline]
+    fn rate(&self, _point: &OrbitPoint<F>) -> F {
+        F::ZERO
+    }
+    #[inline]
+    fn asymptote(&self, _orbit: &Orbit<F>) -> Asymptote<F> {
+        Asymptote::zero()
+    }
+}
+
+impl<A: sealed::Sealed> sealed::Sealed for Option<A> {}
+
+impl<F: Float, A: Dissipation<F>> Dissipation<F> for Option<A> {
+    fn damping_ratio(&self) -> F {
+        self.as_ref().map_or(F::ZERO, Dissipation::damping_ratio)
+    }
+    fn dissipates(&self) -> bool {
+        self.as_ref().is_some_and(Dissipation::dissipates)
+    }
+    fn has_kernel(&self) -> bool {
+        self.as_ref().is_some_and(Dissipation::has_kernel)
+    }
+    fn rate(&self, point: &OrbitPoint<F>) -> F {
+        self.as_ref().map_or(F::ZERO, |m| m.rate(point))
+    }
+    fn asymptote(&self, orbit: &Orbit<F>) -> Asymptote<F> {
+        self.as_ref().map_or(Asymptote::zero(), |m| m.asymptote(orbit))
+    }
+}
+
+impl<A: sealed::Sealed, B: sealed::Sealed> sealed::Sealed for (A, B) {}
+
+impl<F: Float, A: Dissipation<F>, B: Dissipation<F>> Dissipation<F> for (A, B) {
+    fn damping_ratio(&self) -> F {
+        self.0.damping_ratio() + self.1.damping_ratio()
+    }
+    fn dissipates(&self) -> bool {
+        self.0.dissipates() || self.1.dissipates()
+    }
+    fn has_kernel(&self) -> bool {
+        self.0.has_kernel() || self.1.has_kernel()
+    }
+    fn rate(&self, point: &OrbitPoint<F>) -> F {
+        self.0.rate(point) + self.1.rate(point)
+    }
+    fn asymptote(&self, orbit: &Orbit<F>) -> Asymptote<F> {
+        self.0.asymptote(orbit).plus(self.1.asymptote(orbit))
+    }
+}
+
+/// Mechanisms chosen at run time (for tools that read scenes from files). Links every
+/// mechanism; firmware with a fixed switch should name its mechanisms in the type instead.
+pub type AnyDissipation<F> = (Option<Viscous<F>>, Option<Hereditary<F>>);
+
+/// The sign class of Delta, which decides each mechanism's small-J behaviour.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Offset {
+    Preload,
+    Grazing,
+    Gap,
+}
+
+pub(crate) fn offset_class<F: Float>(orbit: &Orbit<F>) -> Offset {
+    let delta = orbit.delta();
+    if delta < F::ZERO {
+        Offset::Preload
+    } else if delta > F::ZERO {
+        Offset::Gap
+    } else {
+        Offset::Grazing
+    }
+}

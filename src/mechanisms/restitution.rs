@@ -1,0 +1,34 @@
+//! Loss at the impacts: the restitution term of E1 (physics.md sec. 3).
+
+use super::{offset_class, Asymptote, Offset};
+use crate::orbit::{Orbit, OrbitPoint};
+use crate::Float;
+
+/// The restitution term of E1: -(1 - R) J / T(J) (m/s^2), with `one_minus_r` = 1 - R.
+///
+/// The paper's preload form needs arctg(J/(2 Omega |Delta|)) (physics.md sec. 4, errata); with
+/// T = 2 theta / Omega this is that form for every sign of Delta.
+///
+/// ```
+/// use contact_bounce::{restitution_rate, Orbit};
+/// let orbit = Orbit::new(100.0_f64, 0.0); // Delta = 0: T = pi / Omega
+/// let rate = restitution_rate(0.1, &orbit.at(2.0));
+/// assert!((rate + 0.1 * 2.0 * 100.0 / core::f64::consts::PI).abs() < 1e-12);
+/// ```
+#[must_use]
+pub fn restitution_rate<F: Float>(one_minus_r: F, point: &OrbitPoint<F>) -> F {
+    -one_minus_r * point.impulse() / point.period()
+}
+
+/// Small-J asymptote of the restitution term (physics.md sec. 4): preload r Omega^2 |Delta|,
+/// gap r Omega J / (2 pi), Delta = 0 exactly r Omega J / pi.
+pub(crate) fn restitution_asymptote<F: Float>(one_minus_r: F, orbit: &Orbit<F>) -> Asymptote<F> {
+    let omega = orbit.omega();
+    let mut out = Asymptote::zero();
+    match offset_class(orbit) {
+        Offset::Preload => out.constant = one_minus_r * omega * omega * orbit.delta().abs(),
+        Offset::Gap => out.linear = one_minus_r * omega / (F::TWO * F::PI),
+        Offset::Grazing => out.linear = one_minus_r * omega / F::PI,
+    }
+    out
+}

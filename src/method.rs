@@ -1,0 +1,140 @@
+//! Choosing a tier: the [`Method`] enum, and `Auto`.
+
+use crate::averaged::Averaged;
+use crate::error::{positive, Error, Parameter};
+use crate::mechanisms::Dissipation;
+use crate::prediction::Prediction;
+use crate::quadrature::{panel_count, Nodes};
+use crate::regime::Regime;
+use crate::{accuracy, closed, map, Float, Scene};
+
+/// A relative tolerance asked of [`Method::Auto`] (finite, > 0).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Tolerance<F>(F);
+
+impl<F: Float> Tolerance<F> {
+    /// A relative tolerance, e.g. 0.01 for 1 %.
+    ///
+    /// # Errors
+    /// [`Parameter::Tolerance`] when NaN, infinite or not positive.
+    pub fn new(relative: F) -> Result<Self, Error> {
+        positive(relative, Parameter::Tolerance).map(Self)
+    }
+    /// The relative tolerance.
+    #[must_use]
+    pub const fn get(self) -> F {
+        self.0
+    }
+}
+
+/// The tier of fidelity to predict with.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[non_exhaustive]
+pub enum Method<F> {
+    /// Closed forms (physics.md sec. 5): exact sums where they exist, else t_b1v / t_b2r.
+    Closed,
+    /// The averaged model with this many Gauss-Legendre nodes per panel.
+    Averaged(Nodes),
+    /// The semi-discrete map, iterating at most this many impacts.
+    Map {
+        /// Cap on iterated impacts (the averaged model finishes beyond it).
+        max_impacts: u32,
+    },
+    /// The cheapest tier whose expected error (physics.md sec. 6) is within the tolerance; if
+    /// none is, the one with the smallest expected error: check
+    /// [`Prediction::promises`] (when it is false, use an exact reference on the host).
+    Auto(Tolerance<F>),
+}
+
+impl<F: Float> Prediction<F> {
+    /// True when the expected error is known and within `tolerance`.
+    #[must_use]
+    pub fn promises(&self, tolerance: Tolerance<F>) -> bool {
+        self.expected_error.is_some_and(|e| e <= tolerance.get())
+    }
+}
+
+impl<F: Float, D: Dissipation<F>> Scene<F, D> {
+    /// Predicts the bounce with the given method. Never fails: the scene was validated.
+    ///
+    /// ```
+    /// use contact_bounce::{Contact, Frequency, Method, Nodes, Offset, Restitution, Scene, Threshold, Viscous};
+    /// let dome = Scene::new(Contact {
+    ///     frequency: Frequency::MassStiffness { mass: 5e-5_f64, stiffness: 5000.0 },
+    ///     offset: Offset::PreloadForce(1.0),
+    ///     restitution: Restitution::Coefficient(0.7),
+    ///     closing_speed: 0.5,
+    ///     threshold: Threshold::None,
+    /// }, Viscous::new(0.03)?)?;
+    /// let closed = dome.predict(Method::Closed).bounce_time().unwrap();
+    /// let averaged = dome.predict(Method::Averaged(Nodes::N8)).bounce_time().unwrap();
+    /// let map = dome.predict(Method::Map { max_impacts: 10_000 }).bounce_time().unwrap();
+    /// // About 0.2 ms, and the tiers agree to within their stated errors.
+    /// assert!(averaged > 1e-4 && averaged < 3e-4);
+    /// assert!((map / averaged - 1.0).abs() < 0.05 && (closed / averaged - 1.0).abs() < 0.3);
+    /// # Ok::<(), contact_bounce::Error>(())
+    /// ```
+    #[must_use]
+    pub fn predict(&self, method: Method<F>) -> Prediction<F> {
+        match method {
+            Method::Closed => closed::predict(self),
+            Method::Averaged(nodes) => Averaged::new(self, nodes).predict(),
+            Method::Map { max_impacts } => map::predict(self, max_impacts),
+            Method::Auto(tolerance) => self.auto(tolerance),
+        }
+    }
+
+    /// The averaged model, for its envelope J(t) and laws of motion.
+    #[must_use]
+    pub const fn averaged(&self, nodes: Nodes) -> Averaged<'_, F, D> {
+        Averaged::new(self, nodes)
+    }
+
+    fn auto(&self, tolerance: Tolerance<F>) -> Prediction<F> {
+        let closed = closed::predict(self);
+        if closed.promises(tolerance) {
+            return closed;
+        }
+        // Expected errors and rough costs (in E1 evaluations) of the other tiers, known before
+        // running them.
+        let estimate = closed.impacts_total.value();
+        let averaged_error = accuracy::with_reduction(self, accuracy::averaged(self, estimate));
+        let map_error = accuracy::with_reduction(self, accuracy::map(self));
+        let start = self.start_impulse();
+        let floor = self
+            .threshold_generating()
+            .unwrap_or(start * F::TAIL_CUTOFF)
+            .max(F::TAIL_CUTOFF * self.omega() * self.delta().abs());
+        let (panels, _) = panel_count((start / floor).ln().max(F::ZERO));
+        let averaged_cost = F::from_u32(panels.saturating_mul(Nodes::N8.count()));
+        let map_cost = match (self.regime(), closed.impacts_above.value(), closed.impacts_total.value()) {
+            (Regime::ZenoAccumulation, _, _) => {
+                let decay = -(-self.loss()).ln_1p();
+                (start / floor).ln().max(F::ONE) / decay
+            }
+            (_, Some(n), _) | (_, None, Some(n)) => n,
+            _ => F::MAX,
+        };
+        let fits = |e: Option<F>| e.is_some_and(|e| e <= tolerance.get());
+        let cap = crate::map::DEFAULT_MAX_IMPACTS;
+        let run_map = || map::predict(self, cap);
+        let run_averaged = || Averaged::new(self, Nodes::N8).predict();
+        let map_first = map_cost <= averaged_cost;
+        match (fits(map_error), fits(averaged_error), map_first) {
+            (true, true, true) | (true, false, _) => run_map(),
+            (_, true, _) => run_averaged(),
+            _ => {
+                // Nothing promises the tolerance: the smallest expected error wins.
+                let rank = |e: Option<F>| e.unwrap_or(F::MAX);
+                let best_other = if rank(map_error) < rank(averaged_error) { run_map() } else { run_averaged() };
+                if rank(best_other.expected_error) < rank(closed.expected_error) {
+                    best_other
+                } else {
+                    closed
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,178 @@
+//! The generating (conservative) orbit: physics.md sec. 2 (the paper's Eq. 3, with its errata).
+//!
+//! Between impacts the contact moves on the undamped orbit of period T(J), where J is the
+//! generating impulse: twice the impact speed. Everything here is in the stable forms of
+//! physics.md sec. 2: sin(theta) = J/h and cos(theta) = -2 Omega Delta / h with
+//! h = hypot(J, 2 Omega Delta); for a gap, pi - theta = atan2(J, 2 Omega Delta) is computed
+//! directly, never as a difference.
+
+use crate::Float;
+
+/// The generating orbit of a contact with natural frequency Omega and offset Delta.
+///
+/// ```
+/// use contact_bounce::Orbit;
+/// // A preload of 1 mm at Omega = 1000 rad/s, generating impulse 1 m/s (j = J/(Omega|Delta|) = 1).
+/// let orbit = Orbit::new(1000.0_f64, -1e-3);
+/// let p = orbit.at(1.0);
+/// // theta = atan(J / (2 Omega |Delta|)) = atan(0.5)
+/// assert!((p.phase() - 0.5_f64.atan()).abs() < 1e-15);
+/// assert!((p.period() - 2.0 * 0.5_f64.atan() / 1000.0).abs() < 1e-18);
+/// // The orbit starts and ends at the stop: x(0+) = x(T) = Delta.
+/// assert!((orbit.position(1.0, p.period()) + 1e-3).abs() < 1e-15);
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Orbit<F> {
+    omega: F,
+    delta: F,
+}
+
+/// The generating orbit at one impulse J: the phase theta, its supplement and the period.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct OrbitPoint<F> {
+    impulse: F,
+    hypot: F,
+    phase: F,
+    supplement: F,
+    omega: F,
+}
+
+impl<F: Float> Orbit<F> {
+    /// The orbit of natural frequency `omega` (rad/s, > 0) and offset `delta` (m; gap > 0,
+    /// preload < 0). The caller guarantees finite inputs and omega > 0 (a
+    /// [`Scene`](crate::Scene) does).
+    #[must_use]
+    pub const fn new(omega: F, delta: F) -> Self {
+        Self { omega, delta }
+    }
+
+    /// Natural frequency Omega (rad/s).
+    #[must_use]
+    pub const fn omega(&self) -> F {
+        self.omega
+    }
+
+    /// Offset Delta (m): gap > 0, preload < 0.
+    #[must_use]
+    pub const fn delta(&self) -> F {
+        self.delta
+    }
+
+    /// 2 Omega Delta (m/s), the impulse scale of the offset (signed).
+    #[must_use]
+    pub fn offset_impulse(&self) -> F {
+        F::TWO * self.omega * self.delta
+    }
+
+    /// The orbit at generating impulse `impulse` (J > 0, m/s). Accurate to a few ULP for every
+    /// J > 0 and Delta of either sign, including J/(Omega |Delta|) down to 1e-30 and up to 1e30.
+    #[must_use]
+    pub fn at(&self, impulse: F) -> OrbitPoint<F> {
+        let q = self.offset_impulse();
+        let hypot = impulse.hypot(q);
+        let (phase, supplement) = if q > F::ZERO {
+            // Gap: theta in (pi/2, pi); its supplement is small for small J, so compute it first.
+            let d = impulse.atan2(q);
+            (F::PI - d, d)
+        } else {
+            // Preload or grazing: theta in (0, pi/2]. `-q` is +0.0 or positive.
+            let theta = impulse.atan2(-q);
+            (theta, F::PI - theta)
+        };
+        OrbitPoint {
+            impulse,
+            hypot,
+            phase,
+            supplement,
+            omega: self.omega,
+        }
+    }
+
+    /// The generating orbit's position x(t) = -J chi(t) (physics.md sec. 2), for any t >= 0
+    /// (T-periodic): x(t) = -(h / (2 Omega)) cos(Omega t' - theta), t' = t mod T in (0, T].
+    #[must_use]
+    pub fn position(&self, impulse: F, t: F) -> F {
+        let p = self.at(impulse);
+        let local = p.time_in_period(t);
+        -(p.hypot / (F::TWO * self.omega)) * (self.omega * local - p.phase).cos()
+    }
+
+    /// The generating orbit's velocity x'(t) (m/s), for any t >= 0 (T-periodic).
+    #[must_use]
+    pub fn velocity(&self, impulse: F, t: F) -> F {
+        let p = self.at(impulse);
+        let local = p.time_in_period(t);
+        p.hypot * F::HALF * (self.omega * local - p.phase).sin()
+    }
+
+    /// chi(t) = cos(Omega (t - T/2)) / (2 Omega sin(Omega T / 2)) (the paper's Eq. 3 with its
+    /// missing brackets restored), T-periodic, so that x(t) = -J chi(t).
+    #[must_use]
+    pub fn chi(&self, impulse: F, t: F) -> F {
+        let p = self.at(impulse);
+        let local = p.time_in_period(t);
+        // 1 / (2 Omega sin theta) = h / (2 Omega J)
+        (self.omega * local - p.phase).cos() * p.hypot / (F::TWO * self.omega * impulse)
+    }
+}
+
+impl<F: Float> OrbitPoint<F> {
+    /// The generating impulse J (m/s).
+    #[must_use]
+    pub const fn impulse(&self) -> F {
+        self.impulse
+    }
+    /// h = hypot(J, 2 Omega Delta) (m/s).
+    #[must_use]
+    pub const fn hypot(&self) -> F {
+        self.hypot
+    }
+    /// theta(J) = atan2(J, -2 Omega Delta), in (0, pi): preload (0, pi/2), grazing pi/2, gap
+    /// (pi/2, pi).
+    #[must_use]
+    pub const fn phase(&self) -> F {
+        self.phase
+    }
+    /// pi - theta, computed without cancellation for a gap (it is the small one there).
+    #[must_use]
+    pub const fn supplement(&self) -> F {
+        self.supplement
+    }
+    /// sin(theta) = J / h.
+    #[must_use]
+    pub fn sin_phase(&self) -> F {
+        self.impulse / self.hypot
+    }
+    /// The period between impacts T(J) = 2 theta / Omega (s): the exact flight time of an
+    /// undamped flight that leaves the stop at J/2.
+    #[must_use]
+    pub fn period(&self) -> F {
+        F::TWO * self.phase / self.omega
+    }
+    /// The impact frequency omega(J) = 2 pi / T = pi Omega / theta (rad/s).
+    #[must_use]
+    pub fn frequency(&self) -> F {
+        F::PI * self.omega / self.phase
+    }
+    /// Natural frequency Omega of the orbit (rad/s).
+    #[must_use]
+    pub const fn natural_frequency(&self) -> F {
+        self.omega
+    }
+    /// t reduced into (0, T] (for t <= 0, returns t unchanged: the orbit before impact 0).
+    fn time_in_period(&self, t: F) -> F {
+        let period = self.period();
+        if t <= F::ZERO {
+            return t;
+        }
+        let cycles = (t / period).floor();
+        let local = t - cycles * period;
+        if local <= F::ZERO {
+            period
+        } else {
+            local
+        }
+    }
+}

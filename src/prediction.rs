@@ -1,0 +1,164 @@
+//! What every tier returns: one prediction type, with its provenance.
+
+use crate::regime::Regime;
+use crate::Float;
+
+/// A time that may never come.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum Time<F> {
+    /// At this time after the first impact (s).
+    At(F),
+    /// Never: the regime is endless (never a huge number).
+    Never,
+}
+
+impl<F: Float> Time<F> {
+    /// The time, if finite.
+    #[must_use]
+    pub fn seconds(self) -> Option<F> {
+        match self {
+            Self::At(t) => Some(t),
+            Self::Never => None,
+        }
+    }
+}
+
+/// A number of impacts that may be infinite.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum Count<F> {
+    /// This many (an integer for the discrete tiers, a real number for the averaged tier).
+    Finite(F),
+    /// Infinitely many (Zeno accumulation or an endless regime).
+    Infinite,
+}
+
+impl<F: Float> Count<F> {
+    /// The count, if finite.
+    #[must_use]
+    pub fn value(self) -> Option<F> {
+        match self {
+            Self::Finite(n) => Some(n),
+            Self::Infinite => None,
+        }
+    }
+}
+
+/// A closed form of physics.md sec. 5.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[non_exhaustive]
+pub enum ClosedForm {
+    /// t_b1 = J_B / (r Omega^2 |Delta|): preload, restitution only.
+    Tb1,
+    /// t_b1v = (3 / (2 zeta Omega)) ln(1 + 2 zeta J_B / (3 r Omega |Delta|)): preload, viscous.
+    Tb1v,
+    /// t_b2 = J_B^2 / (8 zeta Omega^3 Delta^2): gap, viscous, R = 1.
+    Tb2,
+    /// t_b2r = (pi / (r Omega)) ln(1 + r J_B^2 / (8 pi zeta Omega^2 Delta^2)): gap, both.
+    Tb2r,
+    /// The small-impulse asymptote of E1 integrated (preload with R = 1, kernels).
+    Asymptotic,
+    /// Delta = 0: exact, flights pi / Omega_d, impulses shrinking by R exp(-zeta Omega pi / Omega_d).
+    Grazing,
+    /// zeta = 0 with any Delta: the exact sums (v_{n+1} = R v_n, flights (2/Omega) atan2(R v_n, -Omega Delta)).
+    Undamped,
+}
+
+/// The tier of fidelity that produced a prediction.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[non_exhaustive]
+pub enum Tier {
+    /// No model was needed: the regime alone answers (single impact, periodic).
+    Regime,
+    /// A closed form (physics.md sec. 5).
+    Closed(ClosedForm),
+    /// The averaged model J' = E1(J), Gauss-Legendre with this many nodes per panel.
+    Averaged(crate::Nodes),
+    /// The semi-discrete map (physics.md sec. 6).
+    Map,
+}
+
+/// Approximations made on the way to a prediction (a small bit set).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Approximations(u8);
+
+impl Approximations {
+    /// None.
+    pub const NONE: Self = Self(0);
+    /// Two bodies with unequal partial frequencies, reduced at the Rayleigh frequency.
+    pub const TWO_BODY_RAYLEIGH: Self = Self(1);
+    /// A closed form or tier used outside the validity physics.md sec. 6 states for it:
+    /// `expected_error` is then `None`.
+    pub const OUTSIDE_VALIDITY: Self = Self(1 << 1);
+    /// The map reached its iteration cap and the averaged model finished the sum.
+    pub const MAP_CONTINUED_AVERAGED: Self = Self(1 << 2);
+    /// A quadrature reached its panel cap before its range ended.
+    pub const PANELS_CAPPED: Self = Self(1 << 3);
+
+    /// True when every flag of `other` is set.
+    #[must_use]
+    pub const fn contains(self, other: Self) -> bool {
+        self.0 & other.0 == other.0
+    }
+    /// The union.
+    #[must_use]
+    pub const fn with(self, other: Self) -> Self {
+        Self(self.0 | other.0)
+    }
+    /// True when nothing is flagged.
+    #[must_use]
+    pub const fn is_empty(self) -> bool {
+        self.0 == 0
+    }
+    /// The raw bits.
+    #[must_use]
+    pub const fn bits(self) -> u8 {
+        self.0
+    }
+}
+
+/// A bounce prediction, the same for every tier.
+///
+/// Definitions (impact 0 at t = 0 with impulse P_0 = (1 + R) v0; P_end the threshold):
+/// - `end_time`: the last impact (gap with damping), the accumulation time (preload, R < 1),
+///   0 for a single impact, [`Time::Never`] when endless;
+/// - `last_above_time`: the last impact with P >= P_end (the end when there is no threshold);
+///   for the averaged tier, when J(t) reaches the scaled threshold P_end 2R / (1 + R);
+/// - `impacts_above`: impacts with P >= P_end, impact 0 included (a real number for the
+///   averaged tier);
+/// - `impacts_total`: all impacts, [`Count::Infinite`] for Zeno and endless regimes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Prediction<F> {
+    /// The regime.
+    pub regime: Regime,
+    /// When the bounce ends.
+    pub end_time: Time<F>,
+    /// When the last impact above the threshold happens.
+    pub last_above_time: Time<F>,
+    /// How many impacts are above the threshold.
+    pub impacts_above: Count<F>,
+    /// How many impacts there are in all.
+    pub impacts_total: Count<F>,
+    /// The tier that produced this.
+    pub tier: Tier,
+    /// What was approximated.
+    pub approximations: Approximations,
+    /// The relative error physics.md sec. 6 leads one to expect of the bounce time (the end
+    /// time when finite, else the last-above time) for this tier on this scene; `None` when
+    /// the scene is outside every stated validity.
+    pub expected_error: Option<F>,
+}
+
+impl<F: Float> Prediction<F> {
+    /// The time a debounce window must cover: the end of the bounce when finite, else the last
+    /// impact above the threshold; `None` when both are endless.
+    #[must_use]
+    pub fn bounce_time(&self) -> Option<F> {
+        self.end_time.seconds().or(self.last_above_time.seconds())
+    }
+}

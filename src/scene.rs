@@ -1,0 +1,415 @@
+//! The description of one contact event, validated once: physics.md sec. 1.
+
+use crate::error::{derived, finite, non_negative, positive, Error, Parameter, Reason};
+use crate::mechanisms::{
+    restitution::restitution_asymptote, restitution_rate, AnyDissipation, Asymptote,
+    Dissipation, Hereditary, Undamped, Viscous,
+};
+use crate::orbit::{Orbit, OrbitPoint};
+use crate::regime::Regime;
+use crate::Float;
+
+/// Where the contact's natural frequency comes from.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum Frequency<F> {
+    /// Omega (rad/s).
+    Omega(F),
+    /// Effective (reduced) mass (kg) and stiffness (N/m): Omega = sqrt(stiffness / mass).
+    MassStiffness {
+        /// Effective mass (kg).
+        mass: F,
+        /// Effective stiffness (N/m).
+        stiffness: F,
+    },
+}
+
+/// Where the stop is relative to the free rest position.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum Offset<F> {
+    /// Delta (m): gap > 0, preload < 0, grazing 0.
+    Delta(F),
+    /// A preload force (N, > 0): Delta = -force / stiffness (needs the stiffness).
+    PreloadForce(F),
+}
+
+/// The impact law x'(+) = -R x'(-).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum Restitution<F> {
+    /// R in (0, 1].
+    Coefficient(F),
+    /// r = 1 - R in [0, 1): keeps the digits of R near 1 (1 - 0.999 in f32 has 4 digits).
+    Loss(F),
+}
+
+/// The impulse below which an impact no longer counts.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum Threshold<F> {
+    /// No threshold: only regimes that end by themselves can be predicted.
+    None,
+    /// A fraction in (0, 1) of the first impulse (1 + R) v0.
+    FractionOfFirst(F),
+    /// An impulse per unit reduced mass P_end (m/s), below the first impulse (1 + R) v0.
+    Impulse(F),
+}
+
+/// One contact event, as given: the input to [`Scene::new`].
+///
+/// ```
+/// use contact_bounce::{Contact, Frequency, Offset, Restitution, Scene, Threshold, Undamped};
+/// // The tactile dome of physics.md sec. 7 without its damping: m = 5e-5 kg, c = 5000 N/m,
+/// // pressed by 1 N, closing at 0.5 m/s, R = 0.7.
+/// let contact = Contact {
+///     frequency: Frequency::MassStiffness { mass: 5e-5_f32, stiffness: 5000.0 },
+///     offset: Offset::PreloadForce(1.0),
+///     restitution: Restitution::Coefficient(0.7),
+///     closing_speed: 0.5,
+///     threshold: Threshold::None,
+/// };
+/// let scene = Scene::new(contact, Undamped)?;
+/// assert_eq!(scene.regime(), contact_bounce::Regime::ZenoAccumulation);
+/// # Ok::<(), contact_bounce::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Contact<F> {
+    /// Natural frequency, or mass and stiffness.
+    pub frequency: Frequency<F>,
+    /// Gap, preload or preload force.
+    pub offset: Offset<F>,
+    /// R or 1 - R.
+    pub restitution: Restitution<F>,
+    /// Closing speed v0 at the first impact (m/s, > 0).
+    pub closing_speed: F,
+    /// Threshold of the impacts that count.
+    pub threshold: Threshold<F>,
+}
+
+/// Two bodies on springs and dampers (the paper's Eq. 1 and Fig. 2a), colliding at
+/// x1 - x2 = Delta.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct TwoBody<F> {
+    /// Mass of body 1 (kg, > 0).
+    pub m1: F,
+    /// Stiffness of body 1 (N/m, > 0).
+    pub c1: F,
+    /// Damping coefficient of body 1 (N s/m, >= 0).
+    pub d1: F,
+    /// Mass of body 2 (kg, > 0).
+    pub m2: F,
+    /// Stiffness of body 2 (N/m, > 0).
+    pub c2: F,
+    /// Damping coefficient of body 2 (N s/m, >= 0).
+    pub d2: F,
+}
+
+/// The one-body model of a [`TwoBody`] (physics.md sec. 1).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Reduction<F> {
+    /// Omega of the relative motion (rad/s): exact, or the Rayleigh frequency.
+    pub omega: F,
+    /// Viscous damping ratio of the relative motion.
+    pub zeta: F,
+    /// Reduced mass m1 m2 / (m1 + m2) (kg).
+    pub reduced_mass: F,
+    /// m1 / (m1 + m2).
+    pub mass_fraction_1: F,
+    /// True when c1/m1 = c2/m2 and d1/m1 = d2/m2 (to 8 epsilon): the reduction is exact.
+    pub exact: bool,
+    /// The larger partial frequency over the smaller (1 when equal).
+    pub frequency_mismatch: F,
+}
+
+fn close<F: Float>(a: F, b: F) -> bool {
+    (a - b).abs() <= F::from_f64(8.0) * F::EPSILON * a.abs().max(b.abs())
+}
+
+impl<F: Float> TwoBody<F> {
+    /// Reduces to the relative coordinate: exactly when the partial frequencies and damping
+    /// rates match, otherwise at the Rayleigh frequency
+    /// Omega_rel^2 = (c1 m2/m1 + c2 m1/m2) / (m1 + m2) (and the same weighting of d/m),
+    /// flagged as approximate (physics.md sec. 1: ~1 % at a 10 % frequency mismatch for a
+    /// preload, much worse for a gap).
+    ///
+    /// # Errors
+    /// The offending mass, stiffness or damping when NaN, infinite, or not positive (masses,
+    /// stiffnesses) or negative (damping).
+    pub fn reduce(&self) -> Result<Reduction<F>, Error> {
+        let m1 = positive(self.m1, Parameter::Mass1)?;
+        let c1 = positive(self.c1, Parameter::Stiffness1)?;
+        let d1 = non_negative(self.d1, Parameter::Damping1)?;
+        let m2 = positive(self.m2, Parameter::Mass2)?;
+        let c2 = positive(self.c2, Parameter::Stiffness2)?;
+        let d2 = non_negative(self.d2, Parameter::Damping2)?;
+        let total = derived(m1 + m2, Parameter::Mass1)?;
+        let w1 = derived(c1 / m1, Parameter::Stiffness1)?;
+        let w2 = derived(c2 / m2, Parameter::Stiffness2)?;
+        let b1 = finite(d1 / m1, Parameter::Damping1)?;
+        let b2 = finite(d2 / m2, Parameter::Damping2)?;
+        let exact = close(w1, w2) && close(b1, b2);
+        let (omega2, two_zeta_omega) = if exact {
+            ((w1 + w2) * F::HALF, (b1 + b2) * F::HALF)
+        } else {
+            let f1 = m2 / total;
+            let f2 = m1 / total;
+            (w1 * f1 + w2 * f2, b1 * f1 + b2 * f2)
+        };
+        let omega = derived(omega2.sqrt(), Parameter::Stiffness1)?;
+        let zeta = finite(two_zeta_omega / (F::TWO * omega), Parameter::Damping1)?;
+        let mismatch = (w1.max(w2) / w1.min(w2)).sqrt();
+        Ok(Reduction {
+            omega,
+            zeta,
+            reduced_mass: derived(m1 * (m2 / total), Parameter::Mass1)?,
+            mass_fraction_1: m1 / total,
+            exact,
+            frequency_mismatch: mismatch,
+        })
+    }
+}
+
+/// A validated contact event: after construction nothing can fail.
+///
+/// `D` names the mechanisms acting between impacts ([`Undamped`], [`Viscous`],
+/// [`Hereditary`], tuples of them, or [`AnyDissipation`]); restitution is always there.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Scene<F, D = Undamped> {
+    orbit: Orbit<F>,
+    restitution: F,
+    loss: F,
+    closing_speed: F,
+    threshold: Option<F>,
+    dissipation: D,
+    regime: Regime,
+    asymptote: Asymptote<F>,
+    reduction: Option<Reduction<F>>,
+}
+
+impl<F: Float, D: Dissipation<F>> Scene<F, D> {
+    /// Validates a contact with the given mechanisms.
+    ///
+    /// # Errors
+    /// An [`Error`] naming the parameter for: NaN or infinite values; Omega, mass, stiffness,
+    /// closing speed or preload force not positive; R outside (0, 1] or r outside [0, 1); a
+    /// threshold fraction outside (0, 1) or an impulse not positive or at or above the first
+    /// impulse; a preload force without a stiffness; an [`Regime::Endless`] regime with no
+    /// threshold ([`Reason::Required`]); combinations that overflow ([`Reason::Overflow`]).
+    pub fn new(contact: Contact<F>, dissipation: D) -> Result<Self, Error> {
+        Self::build(contact, dissipation, None)
+    }
+
+    fn build(contact: Contact<F>, dissipation: D, reduction: Option<Reduction<F>>) -> Result<Self, Error> {
+        let (omega, stiffness) = match contact.frequency {
+            Frequency::Omega(omega) => (positive(omega, Parameter::Omega)?, None),
+            Frequency::MassStiffness { mass, stiffness } => {
+                let mass = positive(mass, Parameter::Mass)?;
+                let stiffness = positive(stiffness, Parameter::Stiffness)?;
+                let omega = derived((stiffness / mass).sqrt(), Parameter::Stiffness)?;
+                (omega, Some(stiffness))
+            }
+        };
+        let stiffness = stiffness.or(reduction.map(|r| r.reduced_mass * r.omega * r.omega));
+        let delta = match contact.offset {
+            Offset::Delta(delta) => finite(delta, Parameter::Delta)?,
+            Offset::PreloadForce(force) => {
+                let force = positive(force, Parameter::PreloadForce)?;
+                let stiffness = stiffness
+                    .ok_or(Error::new(Parameter::PreloadForce, Reason::NeedsStiffness))?;
+                -derived(force / stiffness, Parameter::PreloadForce)?
+            }
+        };
+        let (restitution, loss) = match contact.restitution {
+            Restitution::Coefficient(r) => {
+                let r = finite(r, Parameter::Restitution)?;
+                if !(r > F::ZERO && r <= F::ONE) {
+                    return Err(Error::new(Parameter::Restitution, Reason::OutOfRange));
+                }
+                (r, F::ONE - r)
+            }
+            Restitution::Loss(loss) => {
+                let loss = finite(loss, Parameter::OneMinusRestitution)?;
+                if !(loss >= F::ZERO && loss < F::ONE) {
+                    return Err(Error::new(Parameter::OneMinusRestitution, Reason::OutOfRange));
+                }
+                (F::ONE - loss, loss)
+            }
+        };
+        let closing_speed = positive(contact.closing_speed, Parameter::ClosingSpeed)?;
+        let first_impulse = derived((F::ONE + restitution) * closing_speed, Parameter::ClosingSpeed)?;
+        derived(F::TWO * restitution * closing_speed, Parameter::ClosingSpeed)?;
+        let threshold = match contact.threshold {
+            Threshold::None => None,
+            Threshold::FractionOfFirst(fraction) => {
+                let fraction = finite(fraction, Parameter::ThresholdFraction)?;
+                if !(fraction > F::ZERO && fraction < F::ONE) {
+                    return Err(Error::new(Parameter::ThresholdFraction, Reason::OutOfRange));
+                }
+                Some(derived(fraction * first_impulse, Parameter::ThresholdFraction)?)
+            }
+            Threshold::Impulse(impulse) => {
+                let impulse = positive(impulse, Parameter::ThresholdImpulse)?;
+                if impulse >= first_impulse {
+                    return Err(Error::new(Parameter::ThresholdImpulse, Reason::AboveFirstImpulse));
+                }
+                // The generating-impulse threshold must stay representable.
+                derived(impulse * F::TWO * restitution / (F::ONE + restitution), Parameter::ThresholdImpulse)?;
+                Some(impulse)
+            }
+        };
+        if delta != F::ZERO {
+            // Every scale the model forms from Omega and Delta must be finite and non-zero.
+            let q = F::TWO * omega * delta.abs();
+            derived(q, Parameter::Delta)?;
+            derived(q * q, Parameter::Delta)?;
+            derived(omega * omega * delta.abs(), Parameter::Delta)?;
+            derived(omega * q * q, Parameter::Delta)?;
+        }
+        let zeta = dissipation.damping_ratio();
+        let sign = if delta < F::ZERO {
+            -1
+        } else if delta > F::ZERO {
+            1
+        } else {
+            0
+        };
+        let regime = Regime::classify(sign, loss == F::ZERO, zeta >= F::ONE, dissipation.dissipates());
+        if regime == Regime::Endless && threshold.is_none() {
+            return Err(Error::new(Parameter::Threshold, Reason::Required));
+        }
+        let orbit = Orbit::new(omega, delta);
+        let asymptote = restitution_asymptote(loss, &orbit).plus(dissipation.asymptote(&orbit));
+        Ok(Self {
+            orbit,
+            restitution,
+            loss,
+            closing_speed,
+            threshold,
+            dissipation,
+            regime,
+            asymptote,
+            reduction,
+        })
+    }
+
+    /// The generating orbit (Omega, Delta).
+    #[must_use]
+    pub const fn orbit(&self) -> &Orbit<F> {
+        &self.orbit
+    }
+    /// Omega (rad/s).
+    #[must_use]
+    pub fn omega(&self) -> F {
+        self.orbit.omega()
+    }
+    /// Delta (m): gap > 0, preload < 0.
+    #[must_use]
+    pub fn delta(&self) -> F {
+        self.orbit.delta()
+    }
+    /// R.
+    #[must_use]
+    pub const fn restitution(&self) -> F {
+        self.restitution
+    }
+    /// r = 1 - R, as given or computed.
+    #[must_use]
+    pub const fn loss(&self) -> F {
+        self.loss
+    }
+    /// v0 (m/s).
+    #[must_use]
+    pub const fn closing_speed(&self) -> F {
+        self.closing_speed
+    }
+    /// The mechanisms between impacts.
+    #[must_use]
+    pub const fn dissipation(&self) -> &D {
+        &self.dissipation
+    }
+    /// The regime (physics.md sec. 4).
+    #[must_use]
+    pub const fn regime(&self) -> Regime {
+        self.regime
+    }
+    /// The two-body reduction, if the scene came from [`Scene::two_body`].
+    #[must_use]
+    pub const fn reduction(&self) -> Option<&Reduction<F>> {
+        self.reduction.as_ref()
+    }
+    /// The impulse of impact 0 per unit reduced mass, P_0 = (1 + R) v0 (m/s).
+    #[must_use]
+    pub fn first_impulse(&self) -> F {
+        (F::ONE + self.restitution) * self.closing_speed
+    }
+    /// The threshold impulse P_end (m/s), if any.
+    #[must_use]
+    pub const fn threshold_impulse(&self) -> Option<F> {
+        self.threshold
+    }
+    /// The averaged model's start, the first flight's generating impulse J_B = 2 R v0 (m/s)
+    /// (physics.md sec. 3: not the physical (1 + R) v0).
+    #[must_use]
+    pub fn start_impulse(&self) -> F {
+        F::TWO * self.restitution * self.closing_speed
+    }
+    /// The threshold on the generating impulse, J_end = P_end 2R / (1 + R) (physics.md sec. 3).
+    #[must_use]
+    pub fn threshold_generating(&self) -> Option<F> {
+        self.threshold
+            .map(|p| p * F::TWO * self.restitution / (F::ONE + self.restitution))
+    }
+    /// j0 = J_B / (Omega |Delta|), the dimensionless first impulse; `None` at Delta = 0.
+    #[must_use]
+    pub fn dimensionless_impulse(&self) -> Option<F> {
+        let scale = self.omega() * self.delta().abs();
+        (scale > F::ZERO).then(|| self.start_impulse() / scale)
+    }
+    /// The averaged rate E1(J) (m/s^2, < 0 where the scene dissipates): restitution plus the
+    /// scene's mechanisms (physics.md sec. 3).
+    #[must_use]
+    pub fn rate(&self, impulse: F) -> F {
+        self.rate_at(&self.orbit.at(impulse))
+    }
+    pub(crate) fn rate_at(&self, point: &OrbitPoint<F>) -> F {
+        restitution_rate(self.loss, point) + self.dissipation.rate(point)
+    }
+    /// The small-impulse asymptote of -E1 (physics.md sec. 4).
+    #[must_use]
+    pub const fn asymptote(&self) -> &Asymptote<F> {
+        &self.asymptote
+    }
+}
+
+impl<F: Float> Scene<F, AnyDissipation<F>> {
+    /// A scene from two bodies (the paper's Eq. 1): reduced exactly when c1/m1 = c2/m2 and
+    /// d1/m1 = d2/m2, else at the Rayleigh frequency and flagged approximate in every
+    /// prediction. A preload force uses the relative stiffness mu Omega^2.
+    ///
+    /// # Errors
+    /// As [`TwoBody::reduce`] and [`Scene::new`].
+    pub fn two_body(
+        bodies: TwoBody<F>,
+        offset: Offset<F>,
+        restitution: Restitution<F>,
+        closing_speed: F,
+        threshold: Threshold<F>,
+        kernel: Option<Hereditary<F>>,
+    ) -> Result<Self, Error> {
+        let reduction = bodies.reduce()?;
+        let viscous = (reduction.zeta > F::ZERO).then_some(Viscous::new(reduction.zeta)?);
+        let contact = Contact {
+            frequency: Frequency::Omega(reduction.omega),
+            offset,
+            restitution,
+            closing_speed,
+            threshold,
+        };
+        Self::build(contact, (viscous, kernel), Some(reduction))
+    }
+}

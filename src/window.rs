@@ -1,0 +1,236 @@
+//! From a prediction to a debounce window in integer ticks: checked, rounded up.
+//!
+//! A window must cover the bounce: it is rounded **up** to whole sampling periods, and every
+//! conversion is checked (fugit's issue #53: a silent `as u32` turned a minute into four
+//! seconds). Also as `const fn`, so firmware can fix its window at compile time.
+
+use crate::error::{finite, non_negative, positive, Error, Parameter, Reason};
+use crate::prediction::Prediction;
+use crate::Float;
+
+/// How much to add to a predicted bounce time: window = factor * t + extra.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Margin<F> {
+    factor: F,
+    extra: F,
+}
+
+impl<F: Float> Margin<F> {
+    /// `factor` >= 1 (e.g. 1.5 for +50 %), `extra` >= 0 seconds.
+    ///
+    /// # Errors
+    /// [`Parameter::MarginFactor`] when NaN, infinite or below 1; [`Parameter::MarginExtra`]
+    /// when NaN, infinite or negative.
+    pub fn new(factor: F, extra: F) -> Result<Self, Error> {
+        let factor = finite(factor, Parameter::MarginFactor)?;
+        if factor < F::ONE {
+            return Err(Error::new(Parameter::MarginFactor, Reason::OutOfRange));
+        }
+        Ok(Self {
+            factor,
+            extra: non_negative(extra, Parameter::MarginExtra)?,
+        })
+    }
+    /// No margin: the window is the predicted time.
+    #[must_use]
+    pub fn none() -> Self {
+        Self {
+            factor: F::ONE,
+            extra: F::ZERO,
+        }
+    }
+    /// Widens the prediction's expected error into the factor: factor * (1 + expected error).
+    /// A prediction with no expected error gets no widening: check
+    /// [`Prediction::expected_error`] yourself in that case.
+    #[must_use]
+    pub fn with_expected_error(self, prediction: &Prediction<F>) -> Self {
+        Self {
+            factor: self.factor * (F::ONE + prediction.expected_error.unwrap_or(F::ZERO)),
+            extra: self.extra,
+        }
+    }
+}
+
+/// A debounce window: a whole number of sampling periods.
+///
+/// ```
+/// use contact_bounce::{Margin, Window};
+/// // 1.2 ms of bounce, +50 %, sampled every 0.5 ms: ceil(1.8 / 0.5) = 4 ticks.
+/// let w = Window::from_seconds(1.2e-3_f64, &Margin::new(1.5, 0.0)?, 0.5e-3)?;
+/// assert_eq!(w.ticks(), 4);
+/// // A window that cannot fit a u32 is an error, not a truncation.
+/// assert!(Window::from_seconds(1e6_f64, &Margin::none(), 1e-9).is_err());
+/// # Ok::<(), contact_bounce::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Window {
+    ticks: u32,
+}
+
+impl Window {
+    /// A window of `ticks` sampling periods.
+    #[must_use]
+    pub const fn from_ticks(ticks: u32) -> Self {
+        Self { ticks }
+    }
+
+    /// ceil((factor * seconds + extra) / sample_period) ticks.
+    ///
+    /// # Errors
+    /// [`Parameter::Time`] when `seconds` is NaN, infinite or negative;
+    /// [`Parameter::SamplePeriod`] when not finite and positive; [`Reason::Overflow`] when the
+    /// window exceeds `u32::MAX` ticks.
+    pub fn from_seconds<F: Float>(seconds: F, margin: &Margin<F>, sample_period: F) -> Result<Self, Error> {
+        let seconds = non_negative(seconds, Parameter::Time)?;
+        let period = positive(sample_period, Parameter::SamplePeriod)?;
+        let covered = margin.factor * seconds + margin.extra;
+        (covered / period)
+            .ceil_u32()
+            .map(Self::from_ticks)
+            .ok_or(Error::new(Parameter::SamplePeriod, Reason::Overflow))
+    }
+
+    /// The window covering a prediction's bounce time ([`Prediction::bounce_time`]).
+    ///
+    /// # Errors
+    /// [`Parameter::Time`] with [`Reason::Endless`] when the prediction has no end and no
+    /// threshold time; otherwise as [`Window::from_seconds`].
+    pub fn from_prediction<F: Float>(prediction: &Prediction<F>, margin: &Margin<F>, sample_period: F) -> Result<Self, Error> {
+        let seconds = prediction
+            .bounce_time()
+            .ok_or(Error::new(Parameter::Time, Reason::Endless))?;
+        Self::from_seconds(seconds, margin, sample_period)
+    }
+
+    /// The window in sampling periods.
+    #[must_use]
+    pub const fn ticks(&self) -> u32 {
+        self.ticks
+    }
+}
+
+const fn check(value: f64, parameter: Parameter) -> Result<f64, Error> {
+    if value != value {
+        Err(Error::new(parameter, Reason::NotANumber))
+    } else if value == f64::INFINITY || value == f64::NEG_INFINITY {
+        Err(Error::new(parameter, Reason::Infinite))
+    } else if value <= 0.0 {
+        Err(Error::new(parameter, Reason::NotPositive))
+    } else {
+        Ok(value)
+    }
+}
+
+/// The leading-order preload bounce time, computable at compile time.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct LeadingOrder {
+    /// t_b1 = J_B / (r Omega^2 |Delta|) = 2 R v0 m / ((1 - R) F) (s).
+    pub seconds: f64,
+    /// j0^2 = (J_B / (Omega |Delta|))^2 = 4 R^2 v0^2 m c / F^2: t_b1 is within 1 % while
+    /// j0 <= 0.61 (R -> 1; see [`crate::Scene::t_b1`] for its worst case), i.e. j0^2 <= 0.37.
+    pub j0_squared: f64,
+}
+
+/// t_b1 from mass (kg), stiffness (N/m), preload force (N), closing speed (m/s) and R in
+/// (0, 1): `const`, so a window can be fixed at compile time (a `const` that is an `Err` is a
+/// compile error when unwrapped with `match`/`panic!`).
+///
+/// ```
+/// use contact_bounce::preload_bounce_time;
+/// // The tactile dome of physics.md sec. 7: 2 * 0.7 * 0.5 * 5e-5 / (0.3 * 1.0) s.
+/// const DOME: f64 = match preload_bounce_time(5e-5, 5000.0, 1.0, 0.5, 0.7) {
+///     Ok(t) => t.seconds,
+///     Err(_) => panic!("bad switch parameters"),
+/// };
+/// assert!((DOME - 1.1666666666666667e-4).abs() < 1e-18);
+/// ```
+///
+/// # Errors
+/// The offending parameter when NaN, infinite or not positive, or R >= 1.
+pub const fn preload_bounce_time(
+    mass: f64,
+    stiffness: f64,
+    preload_force: f64,
+    closing_speed: f64,
+    restitution: f64,
+) -> Result<LeadingOrder, Error> {
+    let mass = match check(mass, Parameter::Mass) {
+        Ok(v) => v,
+        Err(e) => return Err(e),
+    };
+    let stiffness = match check(stiffness, Parameter::Stiffness) {
+        Ok(v) => v,
+        Err(e) => return Err(e),
+    };
+    let force = match check(preload_force, Parameter::PreloadForce) {
+        Ok(v) => v,
+        Err(e) => return Err(e),
+    };
+    let speed = match check(closing_speed, Parameter::ClosingSpeed) {
+        Ok(v) => v,
+        Err(e) => return Err(e),
+    };
+    let restitution = match check(restitution, Parameter::Restitution) {
+        Ok(v) => v,
+        Err(e) => return Err(e),
+    };
+    if restitution >= 1.0 {
+        return Err(Error::new(Parameter::Restitution, Reason::OutOfRange));
+    }
+    let start = 2.0 * restitution * speed;
+    let seconds = start * mass / ((1.0 - restitution) * force);
+    let j0_squared = start * start * mass * stiffness / (force * force);
+    if seconds != seconds || seconds == f64::INFINITY || j0_squared == f64::INFINITY {
+        return Err(Error::new(Parameter::PreloadForce, Reason::Overflow));
+    }
+    Ok(LeadingOrder { seconds, j0_squared })
+}
+
+/// ceil(factor * seconds / sample_period) as `u32` ticks, `const` and checked.
+///
+/// ```
+/// use contact_bounce::window_ticks;
+/// const TICKS: u32 = match window_ticks(1.2e-3, 1.5, 0.5e-3) {
+///     Ok(t) => t,
+///     Err(_) => panic!("window does not fit"),
+/// };
+/// assert_eq!(TICKS, 4);
+/// ```
+///
+/// # Errors
+/// [`Parameter::Time`] when `seconds` is NaN, infinite or not positive;
+/// [`Parameter::MarginFactor`] below 1; [`Parameter::SamplePeriod`] not positive, or with
+/// [`Reason::Overflow`] when the window exceeds `u32::MAX` ticks.
+pub const fn window_ticks(seconds: f64, factor: f64, sample_period: f64) -> Result<u32, Error> {
+    let seconds = match check(seconds, Parameter::Time) {
+        Ok(v) => v,
+        Err(e) => return Err(e),
+    };
+    let factor = match check(factor, Parameter::MarginFactor) {
+        Ok(v) => v,
+        Err(e) => return Err(e),
+    };
+    if factor < 1.0 {
+        return Err(Error::new(Parameter::MarginFactor, Reason::OutOfRange));
+    }
+    let period = match check(sample_period, Parameter::SamplePeriod) {
+        Ok(v) => v,
+        Err(e) => return Err(e),
+    };
+    let ticks = factor * seconds / period;
+    if !(ticks <= u32::MAX as f64) {
+        return Err(Error::new(Parameter::SamplePeriod, Reason::Overflow));
+    }
+    // In range (checked above), so the conversion truncates toward zero exactly.
+    #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+    let whole = ticks as u32;
+    if (whole as f64) < ticks {
+        // Cannot overflow: ticks <= u32::MAX and whole < ticks.
+        Ok(whole + 1)
+    } else {
+        Ok(whole)
+    }
+}
