@@ -154,7 +154,9 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
     /// Time and impacts while J falls from `high` to `low` (0 <= low < high), and whether the
     /// panel cap was hit: quadrature down to the cutoff, the asymptote below it.
     pub(crate) fn fall(&self, high: F, low: F) -> (Time<F>, Count<F>, bool) {
-        let cut = self.cutoff();
+        // The asymptote only replaces the quadrature on the way to J = 0 (where its tail is
+        // O(cutoff) of the total); down to a threshold the quadrature goes all the way.
+        let cut = if low > F::ZERO { F::ZERO } else { self.cutoff() };
         let quad_low = low.max(cut);
         let (mut time, mut impacts, mut capped) = (F::ZERO, F::ZERO, false);
         if quad_low > F::ZERO && high > quad_low {
@@ -216,7 +218,7 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
         }
         let expected = accuracy::with_reduction(
             self.scene,
-            accuracy::averaged(self.scene, impacts_total.value()),
+            accuracy::averaged(self.scene, impacts_total.value(), impacts_above.value()),
         );
         if expected.is_none() {
             approximations = approximations.with(Approximations::OUTSIDE_VALIDITY);
@@ -259,7 +261,9 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
             }
             _ => {}
         }
-        let cut = self.cutoff();
+        // Regimes that end hand over to the asymptote at the cutoff; endless ones march on.
+        let ends = matches!(scene.regime(), Regime::ZenoAccumulation | Regime::LastImpact);
+        let cut = if ends { self.cutoff() } else { F::ZERO };
         let s_cut = if cut > F::ZERO { Some(cut.ln()) } else { None };
         let mut s_hi = start.ln();
         let mut elapsed = F::ZERO;

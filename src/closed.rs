@@ -282,7 +282,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         let rate = (self.loss() / F::PI + zeta) * self.omega();
         (rate > F::ZERO).then(|| Estimate {
             time: (self.start_impulse() / end).ln() / rate,
-            expected_error: Some(accuracy::discreteness(self.loss())),
+            expected_error: Some(accuracy::discreteness(self.loss(), None)),
         })
     }
 

@@ -192,10 +192,10 @@ impl core::error::Error for Error {}
 pub(crate) fn finite<F: crate::Float>(value: F, parameter: Parameter) -> Result<F, Error> {
     if value.is_finite() {
         Ok(value)
-    } else if value == value {
-        Err(Error::new(parameter, Reason::Infinite))
-    } else {
+    } else if value.is_nan() {
         Err(Error::new(parameter, Reason::NotANumber))
+    } else {
+        Err(Error::new(parameter, Reason::Infinite))
     }
 }
 

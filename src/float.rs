@@ -65,6 +65,11 @@ pub trait Float:
     /// A relative size below which an asymptotic small-impulse tail is exact to rounding
     /// (about the cube root of epsilon: 6e-6 in f64, 5e-3 in f32).
     const TAIL_CUTOFF: Self;
+    /// The relative error the math backend can add to a prediction: 0 for libm (its 1-2 ULP
+    /// are below the model's own errors), 0.15 for micromath (`f32` only; measured on the
+    /// host-tests sweep: its atan2 error of ~3e-3 rad is a large relative error of small
+    /// phases).
+    const BACKEND_ERROR: f64;
 
     /// Converts an `f64` (rounds to nearest for `f32`).
     fn from_f64(x: f64) -> Self;
@@ -105,6 +110,8 @@ pub trait Float:
     fn ceil_u32(self) -> Option<u32>;
     /// True unless NaN or infinite.
     fn is_finite(self) -> bool;
+    /// True if NaN.
+    fn is_nan(self) -> bool;
 
     /// The larger of two (NaN-free inputs).
     #[inline]
@@ -131,8 +138,9 @@ const fn narrow<const N: usize>(wide: [(f64, f64); N]) -> [(f32, f32); N] {
     let mut out = [(0.0f32, 0.0f32); N];
     let mut i = 0;
     while i < N {
-        // Rounding a 21-digit constant to the nearest f32 is the intent here.
-        #[allow(clippy::cast_possible_truncation)]
+        // Rounding a 21-digit constant to the nearest f32 is the intent here; `i < N` bounds
+        // the index (const fn: no `get` on arrays in const context).
+        #[allow(clippy::cast_possible_truncation, clippy::as_conversions, clippy::indexing_slicing)]
         {
             out[i] = (wide[i].0 as f32, wide[i].1 as f32);
         }
@@ -195,6 +203,7 @@ impl Float for f64 {
     const MIN_POSITIVE: Self = f64::MIN_POSITIVE;
     const SINC_SERIES_LIMIT: Self = 0.05;
     const TAIL_CUTOFF: Self = 6e-6;
+    const BACKEND_ERROR: f64 = 0.0;
 
     #[inline]
     fn from_f64(x: f64) -> Self {
@@ -268,7 +277,7 @@ impl Float for f64 {
         let up = libm::ceil(self);
         if up >= 0.0 && up <= f64::from(u32::MAX) {
             // In range and integral: the conversion is exact.
-            #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+            #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss, clippy::as_conversions)]
             let n = up as u32;
             Some(n)
         } else {
@@ -278,6 +287,10 @@ impl Float for f64 {
     #[inline]
     fn is_finite(self) -> bool {
         f64::is_finite(self)
+    }
+    #[inline]
+    fn is_nan(self) -> bool {
+        f64::is_nan(self)
     }
 }
 
@@ -306,10 +319,11 @@ impl Float for f32 {
     const MIN_POSITIVE: Self = f32::MIN_POSITIVE;
     const SINC_SERIES_LIMIT: Self = 0.5;
     const TAIL_CUTOFF: Self = 5e-3;
+    const BACKEND_ERROR: f64 = if cfg!(feature = "micromath") { 0.15 } else { 0.0 };
 
     #[inline]
     fn from_f64(x: f64) -> Self {
-        #[allow(clippy::cast_possible_truncation)]
+        #[allow(clippy::cast_possible_truncation, clippy::as_conversions)]
         let narrowed = x as f32;
         narrowed
     }
@@ -319,7 +333,7 @@ impl Float for f32 {
     }
     #[inline]
     fn from_u32(n: u32) -> Self {
-        #[allow(clippy::cast_precision_loss)]
+        #[allow(clippy::cast_precision_loss, clippy::as_conversions)]
         let rounded = n as f32;
         rounded
     }
@@ -385,5 +399,9 @@ impl Float for f32 {
     #[inline]
     fn is_finite(self) -> bool {
         f32::is_finite(self)
+    }
+    #[inline]
+    fn is_nan(self) -> bool {
+        f32::is_nan(self)
     }
 }

@@ -18,7 +18,8 @@
     clippy::must_use_candidate,
     clippy::float_cmp,
     clippy::suboptimal_flops,
-    clippy::missing_errors_doc
+    clippy::missing_errors_doc,
+    clippy::return_self_not_must_use
 )]
 
 mod accuracy;

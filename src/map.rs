@@ -32,6 +32,7 @@ enum Stop<F> {
 }
 
 /// The map's prediction, iterating at most `max_impacts` impacts.
+#[allow(clippy::too_many_lines)] // one loop and its hand-over; splitting it would hide the state
 pub(crate) fn predict<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>, max_impacts: u32) -> Prediction<F> {
     if let Some(p) = by_regime(scene) {
         return p;
@@ -131,7 +132,7 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>, max_impa
     };
     let mut expected = accuracy::with_reduction(scene, accuracy::map(scene));
     if approximations.contains(Approximations::MAP_CONTINUED_AVERAGED) {
-        let averaged = accuracy::averaged(scene, impacts_total.value());
+        let averaged = accuracy::averaged(scene, impacts_total.value(), impacts_above.value());
         expected = match (expected, averaged) {
             (Some(a), Some(b)) => Some(a.max(b)),
             _ => None,

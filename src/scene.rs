@@ -271,13 +271,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
             derived(omega * q * q, Parameter::Delta)?;
         }
         let zeta = dissipation.damping_ratio();
-        let sign = if delta < F::ZERO {
-            -1
-        } else if delta > F::ZERO {
-            1
-        } else {
-            0
-        };
+        let sign: i8 = if delta < F::ZERO { -1 } else { i8::from(delta > F::ZERO) };
         let regime = Regime::classify(sign, loss == F::ZERO, zeta >= F::ONE, dissipation.dissipates());
         if regime == Regime::Endless && threshold.is_none() {
             return Err(Error::new(Parameter::Threshold, Reason::Required));

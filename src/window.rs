@@ -112,9 +112,9 @@ impl Window {
 }
 
 const fn check(value: f64, parameter: Parameter) -> Result<f64, Error> {
-    if value != value {
+    if value.is_nan() {
         Err(Error::new(parameter, Reason::NotANumber))
-    } else if value == f64::INFINITY || value == f64::NEG_INFINITY {
+    } else if value.is_infinite() {
         Err(Error::new(parameter, Reason::Infinite))
     } else if value <= 0.0 {
         Err(Error::new(parameter, Reason::NotPositive))
@@ -183,7 +183,7 @@ pub const fn preload_bounce_time(
     let start = 2.0 * restitution * speed;
     let seconds = start * mass / ((1.0 - restitution) * force);
     let j0_squared = start * start * mass * stiffness / (force * force);
-    if seconds != seconds || seconds == f64::INFINITY || j0_squared == f64::INFINITY {
+    if !seconds.is_finite() || !j0_squared.is_finite() {
         return Err(Error::new(Parameter::PreloadForce, Reason::Overflow));
     }
     Ok(LeadingOrder { seconds, j0_squared })
@@ -221,13 +221,17 @@ pub const fn window_ticks(seconds: f64, factor: f64, sample_period: f64) -> Resu
         Err(e) => return Err(e),
     };
     let ticks = factor * seconds / period;
-    if !(ticks <= u32::MAX as f64) {
+    // u32::MAX as an f64 (exact); `From` is not const.
+    if ticks.is_nan() || ticks > 4_294_967_295.0 {
         return Err(Error::new(Parameter::SamplePeriod, Reason::Overflow));
     }
-    // In range (checked above), so the conversion truncates toward zero exactly.
-    #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
-    let whole = ticks as u32;
-    if (whole as f64) < ticks {
+    // In range (checked above), so the conversions are exact or truncate toward zero.
+    #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss, clippy::as_conversions)]
+    let (whole, back) = {
+        let whole = ticks as u32;
+        (whole, whole as f64)
+    };
+    if back < ticks {
         // Cannot overflow: ticks <= u32::MAX and whole < ticks.
         Ok(whole + 1)
     } else {
