@@ -1,0 +1,243 @@
+//! Every invalid input of the core issue's item 1 returns its typed error, naming the parameter.
+
+use contact_bounce::{
+    Contact, Error, Frequency, Hereditary, Margin, Offset, Parameter, Reason, Restitution, Scene,
+    Threshold, Tolerance, TwoBody, Undamped, Viscous, Window,
+};
+
+const BAD: [(f64, Reason); 3] = [
+    (f64::NAN, Reason::NotANumber),
+    (f64::INFINITY, Reason::Infinite),
+    (f64::NEG_INFINITY, Reason::Infinite),
+];
+
+fn good() -> Contact<f64> {
+    Contact {
+        frequency: Frequency::Omega(1000.0),
+        offset: Offset::Delta(-1e-3),
+        restitution: Restitution::Coefficient(0.7),
+        closing_speed: 0.5,
+        threshold: Threshold::None,
+    }
+}
+
+fn err(contact: Contact<f64>) -> Error {
+    match Scene::new(contact, Undamped) {
+        Ok(s) => panic!("accepted an invalid scene: {contact:?} -> {:?}", s.regime()),
+        Err(e) => e,
+    }
+}
+
+fn expect(contact: Contact<f64>, parameter: Parameter, reason: Reason) {
+    assert_eq!(err(contact), Error::new(parameter, reason), "{contact:?}");
+}
+
+#[test]
+fn the_good_scene_is_accepted() {
+    assert!(Scene::new(good(), Undamped).is_ok());
+}
+
+#[test]
+fn omega_must_be_finite_and_positive() {
+    for (v, reason) in BAD {
+        expect(Contact { frequency: Frequency::Omega(v), ..good() }, Parameter::Omega, reason);
+    }
+    for v in [0.0, -0.0, -1.0] {
+        expect(Contact { frequency: Frequency::Omega(v), ..good() }, Parameter::Omega, Reason::NotPositive);
+    }
+}
+
+#[test]
+fn mass_and_stiffness_must_be_finite_and_positive() {
+    let ms = |mass, stiffness| Contact { frequency: Frequency::MassStiffness { mass, stiffness }, ..good() };
+    for (v, reason) in BAD {
+        expect(ms(v, 1.0), Parameter::Mass, reason);
+        expect(ms(1.0, v), Parameter::Stiffness, reason);
+    }
+    for v in [0.0, -2.0] {
+        expect(ms(v, 1.0), Parameter::Mass, Reason::NotPositive);
+        expect(ms(1.0, v), Parameter::Stiffness, Reason::NotPositive);
+    }
+    // Valid alone, but Omega = sqrt(c/m) overflows.
+    expect(ms(1e-300, 1e300), Parameter::Stiffness, Reason::Overflow);
+}
+
+#[test]
+fn delta_must_be_finite() {
+    for (v, reason) in BAD {
+        expect(Contact { offset: Offset::Delta(v), ..good() }, Parameter::Delta, reason);
+    }
+    // 2 Omega Delta underflows to zero: the scale of the offset is lost.
+    expect(Contact { offset: Offset::Delta(-1e-320), ..good() }, Parameter::Delta, Reason::Overflow);
+}
+
+#[test]
+fn preload_force_must_be_positive_and_needs_a_stiffness() {
+    let with = |force| Contact {
+        frequency: Frequency::MassStiffness { mass: 1e-4, stiffness: 100.0 },
+        offset: Offset::PreloadForce(force),
+        ..good()
+    };
+    for (v, reason) in BAD {
+        expect(with(v), Parameter::PreloadForce, reason);
+    }
+    for v in [0.0, -1.0] {
+        expect(with(v), Parameter::PreloadForce, Reason::NotPositive);
+    }
+    expect(Contact { offset: Offset::PreloadForce(1.0), ..good() }, Parameter::PreloadForce, Reason::NeedsStiffness);
+    assert!(Scene::new(with(0.01), Undamped).is_ok());
+}
+
+#[test]
+fn restitution_must_be_in_zero_one() {
+    for (v, reason) in BAD {
+        expect(Contact { restitution: Restitution::Coefficient(v), ..good() }, Parameter::Restitution, reason);
+        expect(Contact { restitution: Restitution::Loss(v), ..good() }, Parameter::OneMinusRestitution, reason);
+    }
+    for v in [0.0, -0.1, 1.0 + 1e-15, 2.0] {
+        expect(Contact { restitution: Restitution::Coefficient(v), ..good() }, Parameter::Restitution, Reason::OutOfRange);
+    }
+    for v in [1.0, 1.5, -1e-300] {
+        expect(Contact { restitution: Restitution::Loss(v), ..good() }, Parameter::OneMinusRestitution, Reason::OutOfRange);
+    }
+    // R = 1 and r = 0 are valid (lossless impacts).
+    assert!(Scene::new(Contact { restitution: Restitution::Coefficient(1.0), ..good() }, Undamped).is_ok());
+    assert!(Scene::new(Contact { restitution: Restitution::Loss(0.0), ..good() }, Undamped).is_ok());
+}
+
+#[test]
+fn closing_speed_must_be_finite_and_positive() {
+    for (v, reason) in BAD {
+        expect(Contact { closing_speed: v, ..good() }, Parameter::ClosingSpeed, reason);
+    }
+    for v in [0.0, -1.0] {
+        expect(Contact { closing_speed: v, ..good() }, Parameter::ClosingSpeed, Reason::NotPositive);
+    }
+    expect(Contact { closing_speed: f64::MAX, ..good() }, Parameter::ClosingSpeed, Reason::Overflow);
+}
+
+#[test]
+fn damping_ratio_must_be_finite_and_non_negative() {
+    for (v, reason) in BAD {
+        assert_eq!(Viscous::new(v), Err(Error::new(Parameter::DampingRatio, reason)));
+    }
+    assert_eq!(Viscous::new(-1e-9), Err(Error::new(Parameter::DampingRatio, Reason::Negative)));
+    assert!(Viscous::new(0.0).is_ok());
+}
+
+#[test]
+fn kernel_parameters_must_be_finite_and_positive() {
+    for (v, reason) in BAD {
+        assert_eq!(Hereditary::exponential(v, 1.0), Err(Error::new(Parameter::KernelAmplitude, reason)));
+        assert_eq!(Hereditary::exponential(1.0, v), Err(Error::new(Parameter::KernelTimeConstant, reason)));
+    }
+    for v in [0.0, -1.0] {
+        assert_eq!(Hereditary::exponential(v, 1.0), Err(Error::new(Parameter::KernelAmplitude, Reason::NotPositive)));
+        assert_eq!(Hereditary::exponential(1.0, v), Err(Error::new(Parameter::KernelTimeConstant, Reason::NotPositive)));
+    }
+    assert_eq!(Hereditary::exponential(1e300, 1e10), Err(Error::new(Parameter::KernelAmplitude, Reason::Overflow)));
+    let k = Hereditary::exponential(1.0, 1.0).unwrap();
+    for v in [0.0, 1e-20, 0.2, f64::NAN] {
+        assert_eq!(k.with_tolerance(v).map(|_| ()).unwrap_err().parameter(), Parameter::HarmonicTolerance);
+    }
+}
+
+#[test]
+fn thresholds_must_be_valid_where_given_and_present_where_needed() {
+    let with = |t| Contact { threshold: t, ..good() };
+    for (v, reason) in BAD {
+        expect(with(Threshold::FractionOfFirst(v)), Parameter::ThresholdFraction, reason);
+        expect(with(Threshold::Impulse(v)), Parameter::ThresholdImpulse, reason);
+    }
+    for v in [0.0, -0.5, 1.0, 1.5] {
+        expect(with(Threshold::FractionOfFirst(v)), Parameter::ThresholdFraction, Reason::OutOfRange);
+    }
+    for v in [0.0, -1.0] {
+        expect(with(Threshold::Impulse(v)), Parameter::ThresholdImpulse, Reason::NotPositive);
+    }
+    // At or above the first impulse (1 + R) v0 = 0.85: no impact would count.
+    expect(with(Threshold::Impulse(0.85)), Parameter::ThresholdImpulse, Reason::AboveFirstImpulse);
+    // An endless regime needs one: a gap without damping, R < 1.
+    let endless = Contact { offset: Offset::Delta(1e-3), ..good() };
+    expect(endless, Parameter::Threshold, Reason::Required);
+    assert!(Scene::new(Contact { threshold: Threshold::FractionOfFirst(0.01), ..endless }, Undamped).is_ok());
+    // ...and so does Delta = 0, and a preload with R = 1 and damping.
+    expect(Contact { offset: Offset::Delta(0.0), ..good() }, Parameter::Threshold, Reason::Required);
+    let r1 = Contact { restitution: Restitution::Coefficient(1.0), ..good() };
+    assert_eq!(Scene::new(r1, Viscous::new(0.01).unwrap()).unwrap_err(), Error::new(Parameter::Threshold, Reason::Required));
+}
+
+#[test]
+fn two_body_parameters_are_named() {
+    let ok = TwoBody { m1: 1e-3, c1: 100.0, d1: 0.0, m2: 2e-3, c2: 200.0, d2: 0.0 };
+    assert!(ok.reduce().is_ok());
+    type Set = fn(&mut TwoBody<f64>, f64);
+    let fields: [(Set, Parameter, bool); 6] = [
+        (|b, v| b.m1 = v, Parameter::Mass1, true),
+        (|b, v| b.c1 = v, Parameter::Stiffness1, true),
+        (|b, v| b.d1 = v, Parameter::Damping1, false),
+        (|b, v| b.m2 = v, Parameter::Mass2, true),
+        (|b, v| b.c2 = v, Parameter::Stiffness2, true),
+        (|b, v| b.d2 = v, Parameter::Damping2, false),
+    ];
+    for (set, parameter, positive) in fields {
+        for (v, reason) in BAD {
+            let mut b = ok;
+            set(&mut b, v);
+            assert_eq!(b.reduce().unwrap_err(), Error::new(parameter, reason));
+        }
+        let mut b = ok;
+        set(&mut b, -1.0);
+        let reason = if positive { Reason::NotPositive } else { Reason::Negative };
+        assert_eq!(b.reduce().unwrap_err(), Error::new(parameter, reason));
+        let mut b = ok;
+        set(&mut b, 0.0);
+        assert_eq!(b.reduce().is_err(), positive, "{parameter}");
+    }
+    // The same errors come back through Scene::two_body.
+    let mut bad = ok;
+    bad.m2 = 0.0;
+    let e = Scene::two_body(bad, Offset::Delta(-1e-3), Restitution::Coefficient(0.5), 0.1, Threshold::None, None);
+    assert_eq!(e.unwrap_err(), Error::new(Parameter::Mass2, Reason::NotPositive));
+}
+
+#[test]
+fn tolerances_margins_and_windows_are_checked() {
+    for (v, reason) in BAD {
+        assert_eq!(Tolerance::new(v), Err(Error::new(Parameter::Tolerance, reason)));
+        assert_eq!(Margin::new(v, 0.0), Err(Error::new(Parameter::MarginFactor, reason)));
+        assert_eq!(Margin::new(1.0, v), Err(Error::new(Parameter::MarginExtra, reason)));
+        assert_eq!(Window::from_seconds(v, &Margin::none(), 1e-3).map(|w| w.ticks()).unwrap_err().parameter(), Parameter::Time);
+        assert_eq!(Window::from_seconds(1e-3, &Margin::none(), v).map(|w| w.ticks()).unwrap_err().parameter(), Parameter::SamplePeriod);
+    }
+    assert_eq!(Tolerance::new(0.0), Err(Error::new(Parameter::Tolerance, Reason::NotPositive)));
+    assert_eq!(Margin::new(0.99, 0.0), Err(Error::new(Parameter::MarginFactor, Reason::OutOfRange)));
+    assert_eq!(Margin::new(1.0, -1e-9), Err(Error::new(Parameter::MarginExtra, Reason::Negative)));
+    assert_eq!(Window::from_seconds(-1.0, &Margin::none(), 1e-3), Err(Error::new(Parameter::Time, Reason::Negative)));
+    assert_eq!(Window::from_seconds(1.0, &Margin::none(), 0.0), Err(Error::new(Parameter::SamplePeriod, Reason::NotPositive)));
+}
+
+#[test]
+fn errors_display_the_parameter_and_the_reason() {
+    let e = err(Contact { closing_speed: -1.0, ..good() });
+    assert_eq!(e.to_string(), "closing_speed must be > 0");
+    let e = err(Contact { offset: Offset::Delta(f64::NAN), ..good() });
+    assert_eq!(e.to_string(), "gap is NaN");
+    let boxed: Box<dyn std::error::Error> = Box::new(e);
+    assert!(boxed.to_string().contains("gap"));
+}
+
+#[test]
+fn f32_scenes_are_validated_the_same_way() {
+    let c = Contact {
+        frequency: Frequency::Omega(1000.0_f32),
+        offset: Offset::Delta(-1e-3),
+        restitution: Restitution::Coefficient(0.7),
+        closing_speed: f32::NAN,
+        threshold: Threshold::None,
+    };
+    assert_eq!(Scene::new(c, Undamped).unwrap_err(), Error::new(Parameter::ClosingSpeed, Reason::NotANumber));
+    // 2 Omega^2 ... overflows f32 long before f64.
+    let c = Contact { frequency: Frequency::Omega(1e30_f32), closing_speed: 1.0, ..c };
+    assert_eq!(Scene::new(c, Undamped).unwrap_err(), Error::new(Parameter::Delta, Reason::Overflow));
+}
