@@ -156,14 +156,23 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
     pub(crate) fn fall(&self, high: F, low: F) -> (Time<F>, Count<F>, bool) {
         // The asymptote only replaces the quadrature on the way to J = 0 (where its tail is
         // O(cutoff) of the total); down to a threshold the quadrature goes all the way.
-        let cut = if low > F::ZERO { F::ZERO } else { self.cutoff() };
+        let cut = if low > F::ZERO {
+            F::ZERO
+        } else {
+            self.cutoff()
+        };
         let quad_low = low.max(cut);
         let (mut time, mut impacts, mut capped) = (F::ZERO, F::ZERO, false);
         if quad_low > F::ZERO && high > quad_low {
-            let ((t, n), cap) = integrate(quad_low.ln(), high.ln(), self.nodes, |s| self.integrand(s));
+            let ((t, n), cap) =
+                integrate(quad_low.ln(), high.ln(), self.nodes, |s| self.integrand(s));
             (time, impacts, capped) = (t, n, cap);
         }
-        let asymptote_top = if quad_low > F::ZERO { high.min(quad_low) } else { high };
+        let asymptote_top = if quad_low > F::ZERO {
+            high.min(quad_low)
+        } else {
+            high
+        };
         if low < asymptote_top {
             let a = self.scene.asymptote();
             let Time::At(t) = asymptotic_time(a, asymptote_top, low) else {
@@ -186,7 +195,10 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
             return p;
         }
         let start = self.scene.start_impulse();
-        let ends = matches!(self.scene.regime(), Regime::ZenoAccumulation | Regime::LastImpact);
+        let ends = matches!(
+            self.scene.regime(),
+            Regime::ZenoAccumulation | Regime::LastImpact
+        );
         let (threshold_part, rest_from) = match self.scene.threshold_generating() {
             Some(end) => (Some(self.fall(start, end)), end),
             None => (None, start),
@@ -196,10 +208,18 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
             match threshold_part {
                 Some((Time::At(t), Count::Finite(n), _)) => (
                     t_rest.seconds().map_or(Time::Never, |tr| Time::At(t + tr)),
-                    n_rest.value().map_or(Count::Infinite, |nr| Count::Finite(n + nr + F::ONE)),
+                    n_rest
+                        .value()
+                        .map_or(Count::Infinite, |nr| Count::Finite(n + nr + F::ONE)),
                     cap,
                 ),
-                _ => (t_rest, n_rest.value().map_or(Count::Infinite, |n| Count::Finite(n + F::ONE)), cap),
+                _ => (
+                    t_rest,
+                    n_rest
+                        .value()
+                        .map_or(Count::Infinite, |n| Count::Finite(n + F::ONE)),
+                    cap,
+                ),
             }
         } else {
             (Time::Never, Count::Infinite, false)
@@ -207,7 +227,8 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
         let (last_above_time, impacts_above, cap_above) = match threshold_part {
             Some((t, n, cap)) => (
                 t,
-                n.value().map_or(Count::Infinite, |n| Count::Finite(n + F::ONE)),
+                n.value()
+                    .map_or(Count::Infinite, |n| Count::Finite(n + F::ONE)),
                 cap,
             ),
             None => (end_time, impacts_total, false),
@@ -262,9 +283,18 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
             _ => {}
         }
         // Regimes that end hand over to the asymptote at the cutoff; endless ones march on.
-        let ends = matches!(scene.regime(), Regime::ZenoAccumulation | Regime::LastImpact);
+        let ends = matches!(
+            scene.regime(),
+            Regime::ZenoAccumulation | Regime::LastImpact
+        );
         let cut = if ends { self.cutoff() } else { F::ZERO };
-        let s_cut = if cut > F::ZERO { Some(cut.ln()) } else { None };
+        // Never march below the smallest normal impulse (ln J would reach -inf, J/|E1| 0/0).
+        let floor = (F::MIN_POSITIVE * F::from_f64(1e3)).ln();
+        let s_cut = Some(if cut > F::ZERO {
+            cut.ln().max(floor)
+        } else {
+            floor
+        });
         let mut s_hi = start.ln();
         let mut elapsed = F::ZERO;
         let mut impacts = F::ONE;
@@ -298,7 +328,11 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
         let impulse = if a.inverse > F::ZERO {
             let squared = from * from * (-F::TWO * a.linear * tau).exp()
                 - F::TWO * a.inverse * tau * relaxed(F::TWO * a.linear * tau);
-            if squared > F::ZERO { squared.sqrt() } else { F::ZERO }
+            if squared > F::ZERO {
+                squared.sqrt()
+            } else {
+                F::ZERO
+            }
         } else if a.constant > F::ZERO {
             let j = from * (-a.linear * tau).exp() - a.constant * tau * relaxed(a.linear * tau);
             j.max(F::ZERO)
@@ -343,7 +377,9 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
             }
             let step = (next - s).abs();
             s = next;
-            if step <= F::from_f64(4.0) * F::EPSILON * s.abs().max(F::ONE) || hi - lo <= F::EPSILON * s.abs().max(F::ONE) {
+            if step <= F::from_f64(4.0) * F::EPSILON * s.abs().max(F::ONE)
+                || hi - lo <= F::EPSILON * s.abs().max(F::ONE)
+            {
                 break;
             }
         }
@@ -366,7 +402,11 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
                 let p = orbit.at(point.impulse);
                 let cycles = n - F::ONE;
                 let fraction = cycles - cycles.floor();
-                let local = if fraction > F::ZERO { fraction * p.period() } else { p.period() };
+                let local = if fraction > F::ZERO {
+                    fraction * p.period()
+                } else {
+                    p.period()
+                };
                 let local = if t <= F::ZERO { F::ZERO } else { local };
                 -(p.hypot() / (F::TWO * orbit.omega())) * (orbit.omega() * local - p.phase()).cos()
             }

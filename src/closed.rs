@@ -55,7 +55,12 @@ pub(crate) fn asymptotic_time<F: Float>(a: &Asymptote<F>, j1: F, j2: F) -> Time<
 
 /// Impacts while J falls from `j1` to `j2` on the asymptote: the integral of dJ / (|E1| T)
 /// with the small-J period (preload J / (Omega^2 |Delta|), gap 2 pi / Omega, Delta = 0 pi / Omega).
-pub(crate) fn asymptotic_count<F: Float>(a: &Asymptote<F>, orbit: &Orbit<F>, j1: F, j2: F) -> Count<F> {
+pub(crate) fn asymptotic_count<F: Float>(
+    a: &Asymptote<F>,
+    orbit: &Orbit<F>,
+    j1: F,
+    j2: F,
+) -> Count<F> {
     if j1 <= j2 {
         return Count::Finite(F::ZERO);
     }
@@ -93,7 +98,11 @@ pub(crate) fn asymptotic_count<F: Float>(a: &Asymptote<F>, orbit: &Orbit<F>, j1:
 /// Gauss-Legendre on [0, min(x, 1/x)] (error below 1e-16: the integrand is analytic in a
 /// Bernstein ellipse of radius 4.6), and Ti2(x) = Ti2(1/x) + (pi/2) ln x above 1.
 pub(crate) fn inverse_tangent_integral<F: Float>(x: F) -> F {
-    let (inner, reflect) = if x > F::ONE { (F::ONE / x, true) } else { (x, false) };
+    let (inner, reflect) = if x > F::ONE {
+        (F::ONE / x, true)
+    } else {
+        (x, false)
+    };
     let mut f = |y: F| (y.atan() / y, F::ZERO);
     let (value, _) = panel(F::ZERO, inner, Nodes::N12, &mut f);
     if reflect {
@@ -118,7 +127,8 @@ fn small_tail<F: Float>(y: F, restitution: F, loss: F) -> F {
     let y2 = y * y;
     let geometric3 = loss * (F::ONE + r + r2);
     let geometric5 = loss * (F::ONE + r + r2 + r2 * r + r2 * r2);
-    y / loss - y * y2 / (F::from_f64(3.0) * geometric3) + y * y2 * y2 / (F::from_f64(5.0) * geometric5)
+    y / loss - y * y2 / (F::from_f64(3.0) * geometric3)
+        + y * y2 * y2 / (F::from_f64(5.0) * geometric5)
 }
 
 /// Euler-Maclaurin for sum_{m >= 0} atan(x e^{-lambda m}) (lambda < 0.05): the integral
@@ -129,7 +139,8 @@ fn euler_maclaurin<F: Float>(x: F, decay: F) -> F {
     let v = if x > F::ONE { F::ONE / x } else { x };
     let v2 = v * v;
     let d1 = v / (F::ONE + v2);
-    let d3 = v * (F::ONE - F::from_f64(6.0) * v2 + v2 * v2) / ((F::ONE + v2) * (F::ONE + v2) * (F::ONE + v2));
+    let d3 = v * (F::ONE - F::from_f64(6.0) * v2 + v2 * v2)
+        / ((F::ONE + v2) * (F::ONE + v2) * (F::ONE + v2));
     inverse_tangent_integral(x) / decay + x.atan() * F::HALF + decay * d1 / F::from_f64(12.0)
         - decay * decay * decay * d3 / F::from_f64(720.0)
 }
@@ -361,17 +372,23 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Predi
     }
     let asymptote = scene.asymptote();
     let start = scene.start_impulse();
-    let (form, expected) = match (offset_class(scene.orbit()), dissipation.has_kernel()) {
-        (Offset::Preload, false) if scene.loss() > F::ZERO => {
-            (ClosedForm::Tb1v, scene.t_b1v().and_then(|e| e.expected_error))
+    // The named forms are the asymptote's integral to J = 0; report them as they are.
+    let named = match (offset_class(scene.orbit()), dissipation.has_kernel()) {
+        (Offset::Preload, false) => scene.t_b1v().map(|e| (ClosedForm::Tb1v, e)),
+        (Offset::Gap, false) if scene.loss() > F::ZERO => {
+            scene.t_b2r().map(|e| (ClosedForm::Tb2r, e))
         }
-        (Offset::Gap, false) => (
-            if scene.loss() > F::ZERO { ClosedForm::Tb2r } else { ClosedForm::Tb2 },
-            scene.t_b2().and_then(|e| e.expected_error),
-        ),
-        _ => (ClosedForm::Asymptotic, None),
+        (Offset::Gap, false) => scene.t_b2().map(|e| (ClosedForm::Tb2, e)),
+        _ => None,
     };
-    let end_time = asymptotic_time(asymptote, start, F::ZERO);
+    let (form, expected, end_time) = match named {
+        Some((form, estimate)) => (form, estimate.expected_error, Time::At(estimate.time)),
+        None => (
+            ClosedForm::Asymptotic,
+            None,
+            asymptotic_time(asymptote, start, F::ZERO),
+        ),
+    };
     let impacts_total = add_one(asymptotic_count(asymptote, scene.orbit(), start, F::ZERO));
     let (last_above_time, impacts_above) = match scene.threshold_generating() {
         Some(end) => (
@@ -419,7 +436,9 @@ impl<F: Float> Count<F> {
     pub(crate) fn min_with(self, other: Self) -> Self {
         match (self, other) {
             (Self::Finite(a), Self::Finite(b)) => Self::Finite(a.min(b)),
-            (Self::Finite(a), Self::Infinite) | (Self::Infinite, Self::Finite(a)) => Self::Finite(a),
+            (Self::Finite(a), Self::Infinite) | (Self::Infinite, Self::Finite(a)) => {
+                Self::Finite(a)
+            }
             (Self::Infinite, Self::Infinite) => Self::Infinite,
         }
     }
@@ -435,7 +454,10 @@ fn exact_discrete<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Predictio
     // Per-impact decay of the impulse, and (Delta = 0 only) the constant flight time.
     let (decay, grazing_flight) = if scene.delta() == F::ZERO {
         let damped = omega * (F::ONE - zeta * zeta).sqrt();
-        (loss_decay + zeta * omega * F::PI / damped, Some(F::PI / damped))
+        (
+            loss_decay + zeta * omega * F::PI / damped,
+            Some(F::PI / damped),
+        )
     } else {
         (loss_decay, None)
     };
@@ -444,7 +466,9 @@ fn exact_discrete<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Predictio
         None => scene.undamped_flights_until(n),
     };
     let end_time = match scene.regime() {
-        Regime::ZenoAccumulation => scene.undamped_accumulation_time().map_or(Time::Never, Time::At),
+        Regime::ZenoAccumulation => scene
+            .undamped_accumulation_time()
+            .map_or(Time::Never, Time::At),
         _ => Time::Never,
     };
     let (last_above_time, impacts_above) = match scene.threshold_impulse() {

@@ -140,7 +140,11 @@ const fn narrow<const N: usize>(wide: [(f64, f64); N]) -> [(f32, f32); N] {
     while i < N {
         // Rounding a 21-digit constant to the nearest f32 is the intent here; `i < N` bounds
         // the index (const fn: no `get` on arrays in const context).
-        #[allow(clippy::cast_possible_truncation, clippy::as_conversions, clippy::indexing_slicing)]
+        #[allow(
+            clippy::cast_possible_truncation,
+            clippy::as_conversions,
+            clippy::indexing_slicing
+        )]
         {
             out[i] = (wide[i].0 as f32, wide[i].1 as f32);
         }
@@ -277,7 +281,11 @@ impl Float for f64 {
         let up = libm::ceil(self);
         if up >= 0.0 && up <= f64::from(u32::MAX) {
             // In range and integral: the conversion is exact.
-            #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss, clippy::as_conversions)]
+            #[allow(
+                clippy::cast_possible_truncation,
+                clippy::cast_sign_loss,
+                clippy::as_conversions
+            )]
             let n = up as u32;
             Some(n)
         } else {
@@ -319,7 +327,11 @@ impl Float for f32 {
     const MIN_POSITIVE: Self = f32::MIN_POSITIVE;
     const SINC_SERIES_LIMIT: Self = 0.5;
     const TAIL_CUTOFF: Self = 5e-3;
-    const BACKEND_ERROR: f64 = if cfg!(feature = "micromath") { 0.15 } else { 0.0 };
+    const BACKEND_ERROR: f64 = if cfg!(feature = "micromath") {
+        0.15
+    } else {
+        0.0
+    };
 
     #[inline]
     fn from_f64(x: f64) -> Self {

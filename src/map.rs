@@ -33,7 +33,10 @@ enum Stop<F> {
 
 /// The map's prediction, iterating at most `max_impacts` impacts.
 #[allow(clippy::too_many_lines)] // one loop and its hand-over; splitting it would hide the state
-pub(crate) fn predict<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>, max_impacts: u32) -> Prediction<F> {
+pub(crate) fn predict<F: Float, D: Dissipation<F>>(
+    scene: &Scene<F, D>,
+    max_impacts: u32,
+) -> Prediction<F> {
     if let Some(p) = by_regime(scene) {
         return p;
     }
@@ -54,10 +57,20 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>, max_impa
     let stop = loop {
         let j = F::TWO * restitution * speed;
         if preload && j <= tail {
-            break Stop::Rest { j, t: time.value(), n: F::from_u32(impacts), averaged: false };
+            break Stop::Rest {
+                j,
+                t: time.value(),
+                n: F::from_u32(impacts),
+                averaged: false,
+            };
         }
         if impacts > max_impacts {
-            break Stop::Rest { j, t: time.value(), n: F::from_u32(impacts), averaged: true };
+            break Stop::Rest {
+                j,
+                t: time.value(),
+                n: F::from_u32(impacts),
+                averaged: true,
+            };
         }
         let point = orbit.at(j);
         let period = point.period();
@@ -65,7 +78,11 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>, max_impa
         if returning <= F::ZERO {
             // No return: the impact just made was the last (a preload always returns: its
             // flight then ends the bounce with a vanishing impulse).
-            let end = if preload { time.value() + period } else { time.value() };
+            let end = if preload {
+                time.value() + period
+            } else {
+                time.value()
+            };
             break Stop::Ended(end, F::from_u32(impacts));
         }
         time.add(period);
@@ -101,7 +118,11 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>, max_impa
                         averaged_model.fall(j, j_end)
                     } else {
                         let a = scene.asymptote();
-                        (asymptotic_time(a, j, j_end), asymptotic_count(a, orbit, j, j_end), false)
+                        (
+                            asymptotic_time(a, j, j_end),
+                            asymptotic_count(a, orbit, j, j_end),
+                            false,
+                        )
                     };
                     if let (Time::At(dt), Count::Finite(dn)) = (dt, dn) {
                         last_above = t + dt;
@@ -116,11 +137,16 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>, max_impa
                     averaged_model.fall(j, F::ZERO)
                 } else {
                     let a = scene.asymptote();
-                    (asymptotic_time(a, j, F::ZERO), asymptotic_count(a, orbit, j, F::ZERO), false)
+                    (
+                        asymptotic_time(a, j, F::ZERO),
+                        asymptotic_count(a, orbit, j, F::ZERO),
+                        false,
+                    )
                 };
                 (
                     dt.seconds().map_or(Time::Never, |dt| Time::At(t + dt)),
-                    dn.value().map_or(Count::Infinite, |dn| Count::Finite(n + dn)),
+                    dn.value()
+                        .map_or(Count::Infinite, |dn| Count::Finite(n + dn)),
                 )
             }
         }

@@ -112,7 +112,11 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
             .max(F::TAIL_CUTOFF * self.omega() * self.delta().abs());
         let (panels, _) = panel_count((start / floor).ln().max(F::ZERO));
         let averaged_cost = F::from_u32(panels.saturating_mul(Nodes::N8.count()));
-        let map_cost = match (self.regime(), closed.impacts_above.value(), closed.impacts_total.value()) {
+        let map_cost = match (
+            self.regime(),
+            closed.impacts_above.value(),
+            closed.impacts_total.value(),
+        ) {
             (Regime::ZenoAccumulation, _, _) => {
                 let decay = -(-self.loss()).ln_1p();
                 (start / floor).ln().max(F::ONE) / decay
@@ -131,7 +135,11 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
             _ => {
                 // Nothing promises the tolerance: the smallest expected error wins.
                 let rank = |e: Option<F>| e.unwrap_or(F::MAX);
-                let best_other = if rank(map_error) < rank(averaged_error) { run_map() } else { run_averaged() };
+                let best_other = if rank(map_error) < rank(averaged_error) {
+                    run_map()
+                } else {
+                    run_averaged()
+                };
                 if rank(best_other.expected_error) < rank(closed.expected_error) {
                     best_other
                 } else {

@@ -38,7 +38,12 @@ impl Regime {
     /// `delta_sign`: the sign of Delta (-1, 0, 1); `lossless_impacts`: R = 1;
     /// `zeta`: viscous ratio; `dissipates`: any loss between impacts.
     #[must_use]
-    pub fn classify(delta_sign: i8, lossless_impacts: bool, zeta_at_least_one: bool, dissipates: bool) -> Self {
+    pub fn classify(
+        delta_sign: i8,
+        lossless_impacts: bool,
+        zeta_at_least_one: bool,
+        dissipates: bool,
+    ) -> Self {
         if delta_sign >= 0 && zeta_at_least_one {
             return Self::SingleImpact;
         }

@@ -2,8 +2,8 @@
 
 use crate::error::{derived, finite, non_negative, positive, Error, Parameter, Reason};
 use crate::mechanisms::{
-    restitution::restitution_asymptote, restitution_rate, AnyDissipation, Asymptote,
-    Dissipation, Hereditary, Undamped, Viscous,
+    restitution::restitution_asymptote, restitution_rate, AnyDissipation, Asymptote, Dissipation,
+    Hereditary, Undamped, Viscous,
 };
 use crate::orbit::{Orbit, OrbitPoint};
 use crate::regime::Regime;
@@ -204,7 +204,11 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         Self::build(contact, dissipation, None)
     }
 
-    fn build(contact: Contact<F>, dissipation: D, reduction: Option<Reduction<F>>) -> Result<Self, Error> {
+    fn build(
+        contact: Contact<F>,
+        dissipation: D,
+        reduction: Option<Reduction<F>>,
+    ) -> Result<Self, Error> {
         let (omega, stiffness) = match contact.frequency {
             Frequency::Omega(omega) => (positive(omega, Parameter::Omega)?, None),
             Frequency::MassStiffness { mass, stiffness } => {
@@ -219,8 +223,8 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
             Offset::Delta(delta) => finite(delta, Parameter::Delta)?,
             Offset::PreloadForce(force) => {
                 let force = positive(force, Parameter::PreloadForce)?;
-                let stiffness = stiffness
-                    .ok_or(Error::new(Parameter::PreloadForce, Reason::NeedsStiffness))?;
+                let stiffness =
+                    stiffness.ok_or(Error::new(Parameter::PreloadForce, Reason::NeedsStiffness))?;
                 -derived(force / stiffness, Parameter::PreloadForce)?
             }
         };
@@ -235,14 +239,23 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
             Restitution::Loss(loss) => {
                 let loss = finite(loss, Parameter::OneMinusRestitution)?;
                 if !(loss >= F::ZERO && loss < F::ONE) {
-                    return Err(Error::new(Parameter::OneMinusRestitution, Reason::OutOfRange));
+                    return Err(Error::new(
+                        Parameter::OneMinusRestitution,
+                        Reason::OutOfRange,
+                    ));
                 }
                 (F::ONE - loss, loss)
             }
         };
         let closing_speed = positive(contact.closing_speed, Parameter::ClosingSpeed)?;
-        let first_impulse = derived((F::ONE + restitution) * closing_speed, Parameter::ClosingSpeed)?;
-        derived(F::TWO * restitution * closing_speed, Parameter::ClosingSpeed)?;
+        let first_impulse = derived(
+            (F::ONE + restitution) * closing_speed,
+            Parameter::ClosingSpeed,
+        )?;
+        derived(
+            F::TWO * restitution * closing_speed,
+            Parameter::ClosingSpeed,
+        )?;
         let threshold = match contact.threshold {
             Threshold::None => None,
             Threshold::FractionOfFirst(fraction) => {
@@ -250,15 +263,24 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
                 if !(fraction > F::ZERO && fraction < F::ONE) {
                     return Err(Error::new(Parameter::ThresholdFraction, Reason::OutOfRange));
                 }
-                Some(derived(fraction * first_impulse, Parameter::ThresholdFraction)?)
+                Some(derived(
+                    fraction * first_impulse,
+                    Parameter::ThresholdFraction,
+                )?)
             }
             Threshold::Impulse(impulse) => {
                 let impulse = positive(impulse, Parameter::ThresholdImpulse)?;
                 if impulse >= first_impulse {
-                    return Err(Error::new(Parameter::ThresholdImpulse, Reason::AboveFirstImpulse));
+                    return Err(Error::new(
+                        Parameter::ThresholdImpulse,
+                        Reason::AboveFirstImpulse,
+                    ));
                 }
                 // The generating-impulse threshold must stay representable.
-                derived(impulse * F::TWO * restitution / (F::ONE + restitution), Parameter::ThresholdImpulse)?;
+                derived(
+                    impulse * F::TWO * restitution / (F::ONE + restitution),
+                    Parameter::ThresholdImpulse,
+                )?;
                 Some(impulse)
             }
         };
@@ -271,8 +293,17 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
             derived(omega * q * q, Parameter::Delta)?;
         }
         let zeta = dissipation.damping_ratio();
-        let sign: i8 = if delta < F::ZERO { -1 } else { i8::from(delta > F::ZERO) };
-        let regime = Regime::classify(sign, loss == F::ZERO, zeta >= F::ONE, dissipation.dissipates());
+        let sign: i8 = if delta < F::ZERO {
+            -1
+        } else {
+            i8::from(delta > F::ZERO)
+        };
+        let regime = Regime::classify(
+            sign,
+            loss == F::ZERO,
+            zeta >= F::ONE,
+            dissipation.dissipates(),
+        );
         if regime == Regime::Endless && threshold.is_none() {
             return Err(Error::new(Parameter::Threshold, Reason::Required));
         }

@@ -82,7 +82,11 @@ impl Window {
     /// [`Parameter::Time`] when `seconds` is NaN, infinite or negative;
     /// [`Parameter::SamplePeriod`] when not finite and positive; [`Reason::Overflow`] when the
     /// window exceeds `u32::MAX` ticks.
-    pub fn from_seconds<F: Float>(seconds: F, margin: &Margin<F>, sample_period: F) -> Result<Self, Error> {
+    pub fn from_seconds<F: Float>(
+        seconds: F,
+        margin: &Margin<F>,
+        sample_period: F,
+    ) -> Result<Self, Error> {
         let seconds = non_negative(seconds, Parameter::Time)?;
         let period = positive(sample_period, Parameter::SamplePeriod)?;
         let covered = margin.factor * seconds + margin.extra;
@@ -97,7 +101,11 @@ impl Window {
     /// # Errors
     /// [`Parameter::Time`] with [`Reason::Endless`] when the prediction has no end and no
     /// threshold time; otherwise as [`Window::from_seconds`].
-    pub fn from_prediction<F: Float>(prediction: &Prediction<F>, margin: &Margin<F>, sample_period: F) -> Result<Self, Error> {
+    pub fn from_prediction<F: Float>(
+        prediction: &Prediction<F>,
+        margin: &Margin<F>,
+        sample_period: F,
+    ) -> Result<Self, Error> {
         let seconds = prediction
             .bounce_time()
             .ok_or(Error::new(Parameter::Time, Reason::Endless))?;
@@ -186,7 +194,10 @@ pub const fn preload_bounce_time(
     if !seconds.is_finite() || !j0_squared.is_finite() {
         return Err(Error::new(Parameter::PreloadForce, Reason::Overflow));
     }
-    Ok(LeadingOrder { seconds, j0_squared })
+    Ok(LeadingOrder {
+        seconds,
+        j0_squared,
+    })
 }
 
 /// ceil(factor * seconds / sample_period) as `u32` ticks, `const` and checked.
@@ -226,7 +237,11 @@ pub const fn window_ticks(seconds: f64, factor: f64, sample_period: f64) -> Resu
         return Err(Error::new(Parameter::SamplePeriod, Reason::Overflow));
     }
     // In range (checked above), so the conversions are exact or truncate toward zero.
-    #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss, clippy::as_conversions)]
+    #[allow(
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        clippy::as_conversions
+    )]
     let (whole, back) = {
         let whole = ticks as u32;
         (whole, whole as f64)

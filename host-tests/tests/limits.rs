@@ -53,12 +53,19 @@ fn small_impulse_limits_of_e1_preload() {
     // (theta = atan(j/2) = j/2 (1 - j^2/12 + ...)), so |E1/limit - 1| <= j^2.
     let delta: f64 = -1e-3;
     for (r, zeta) in [(0.3, 0.0), (0.01, 0.05), (1e-4, 0.2)] {
-        let scene = Scene::new(contact(delta, r, 1.0, Threshold::None), Viscous::new(zeta).unwrap()).unwrap();
+        let scene = Scene::new(
+            contact(delta, r, 1.0, Threshold::None),
+            Viscous::new(zeta).unwrap(),
+        )
+        .unwrap();
         for j in [1e-2, 1e-3, 1e-5] {
             let impulse = j * OMEGA * delta.abs();
             let limit = -r * OMEGA * OMEGA * delta.abs() - 2.0 / 3.0 * zeta * OMEGA * impulse;
             let e1 = scene.rate(impulse);
-            assert!(rel(e1, limit) <= j * j, "r {r} zeta {zeta} j {j}: {e1} vs {limit}");
+            assert!(
+                rel(e1, limit) <= j * j,
+                "r {r} zeta {zeta} j {j}: {e1} vs {limit}"
+            );
             let a = scene.asymptote();
             assert!(rel(-a.magnitude(impulse), limit) < 1e-14);
         }
@@ -81,7 +88,10 @@ fn small_impulse_limits_of_e1_gap() {
             let limit = -r * OMEGA * impulse / (2.0 * std::f64::consts::PI)
                 - 4.0 * zeta * OMEGA.powi(3) * delta * delta / impulse;
             let e1 = scene.rate(impulse);
-            assert!(rel(e1, limit) <= j, "r {r} zeta {zeta} j {j}: {e1} vs {limit}");
+            assert!(
+                rel(e1, limit) <= j,
+                "r {r} zeta {zeta} j {j}: {e1} vs {limit}"
+            );
         }
     }
 }
@@ -97,7 +107,10 @@ fn grazing_rate_is_exactly_linear() {
         .unwrap();
         for impulse in [1e-9, 1e-3, 1.0, 1e6] {
             let exact = -(r / std::f64::consts::PI + zeta) * OMEGA * impulse;
-            assert!(rel(scene.rate(impulse), exact) < 1e-14, "{r} {zeta} {impulse}");
+            assert!(
+                rel(scene.rate(impulse), exact) < 1e-14,
+                "{r} {zeta} {impulse}"
+            );
         }
     }
 }
@@ -130,7 +143,10 @@ fn grazing_averaged_is_the_exponential_and_closed_is_the_discrete_decay() {
         let p = scene.predict(Method::Closed);
         assert_eq!(p.impacts_above, Count::Finite(f64::from(n + 1)));
         let t = p.last_above_time.seconds().unwrap();
-        assert!(rel(t, f64::from(n) * std::f64::consts::PI / damped) < 1e-13, "{t}");
+        assert!(
+            rel(t, f64::from(n) * std::f64::consts::PI / damped) < 1e-13,
+            "{t}"
+        );
     }
 }
 
@@ -145,7 +161,10 @@ fn exact_undamped_accumulation_matches_brute_force() {
             let scene = Scene::new(contact(delta, r, v0, Threshold::None), Undamped).unwrap();
             let exact = brute_flights(delta, restitution, v0, None);
             let closed = scene.undamped_accumulation_time().unwrap();
-            assert!(rel(closed, exact) < 1e-11, "r {r} j0 {j0}: {closed} vs {exact}");
+            assert!(
+                rel(closed, exact) < 1e-11,
+                "r {r} j0 {j0}: {closed} vs {exact}"
+            );
             let p = scene.predict(Method::Closed);
             assert_eq!(p.end_time, Time::At(closed));
         }
@@ -166,7 +185,10 @@ fn exact_undamped_partial_sums_match_brute_force_for_gap_and_preload() {
                 #[allow(clippy::cast_precision_loss)]
                 let closed = scene.undamped_flights_until(n as f64);
                 let exact = brute_flights(delta, restitution, 0.7, Some(n));
-                assert!(rel(closed, exact) < 1e-11, "delta {delta} r {r} n {n}: {closed} vs {exact}");
+                assert!(
+                    rel(closed, exact) < 1e-11,
+                    "delta {delta} r {r} n {n}: {closed} vs {exact}"
+                );
             }
         }
     }
@@ -177,15 +199,38 @@ fn impacts_above_threshold_follow_the_geometric_count() {
     // floor(ln(P0/P_end) / ln(1/R)) + 1, for preload and gap, closed and map alike.
     for delta in [-1e-3, 1e-3] {
         for (r, fraction) in [(0.3, 0.01), (0.01, 1e-3), (1e-3, 0.5)] {
-            let scene = Scene::new(contact(delta, r, 0.2, Threshold::FractionOfFirst(fraction)), Undamped).unwrap();
+            let scene = Scene::new(
+                contact(delta, r, 0.2, Threshold::FractionOfFirst(fraction)),
+                Undamped,
+            )
+            .unwrap();
             let expected = ((1.0 / fraction).ln() / -(-r).ln_1p()).floor() + 1.0;
-            for method in [Method::Closed, Method::Map { max_impacts: 1_000_000 }] {
+            for method in [
+                Method::Closed,
+                Method::Map {
+                    max_impacts: 1_000_000,
+                },
+            ] {
                 let p = scene.predict(method);
-                assert_eq!(p.impacts_above, Count::Finite(expected), "{delta} {r} {method:?}");
+                assert_eq!(
+                    p.impacts_above,
+                    Count::Finite(expected),
+                    "{delta} {r} {method:?}"
+                );
             }
             // The map iterates what the closed form sums: same time to rounding.
-            let closed = scene.predict(Method::Closed).last_above_time.seconds().unwrap();
-            let map = scene.predict(Method::Map { max_impacts: 1_000_000 }).last_above_time.seconds().unwrap();
+            let closed = scene
+                .predict(Method::Closed)
+                .last_above_time
+                .seconds()
+                .unwrap();
+            let map = scene
+                .predict(Method::Map {
+                    max_impacts: 1_000_000,
+                })
+                .last_above_time
+                .seconds()
+                .unwrap();
             assert!(rel(map, closed) < 1e-11, "{delta} {r}: {map} vs {closed}");
         }
     }
@@ -204,9 +249,18 @@ fn bouncing_ball_limit() {
             let ball = 2.0 * restitution * v0 / (r * OMEGA * OMEGA * delta.abs());
             assert!(rel(scene.t_b1().unwrap().time, ball) < 1e-14);
             let bound = (j0 / 2.0) * (j0 / 2.0) / 3.0;
-            for method in [Method::Closed, Method::Averaged(Nodes::N8), Method::Map { max_impacts: 100_000 }] {
+            for method in [
+                Method::Closed,
+                Method::Averaged(Nodes::N8),
+                Method::Map {
+                    max_impacts: 100_000,
+                },
+            ] {
                 let t = scene.predict(method).end_time.seconds().unwrap();
-                assert!(rel(t, ball) <= bound * 1.0001 + 1e-13, "{method:?} r {r} j0 {j0}: {t} vs {ball}");
+                assert!(
+                    rel(t, ball) <= bound * 1.0001 + 1e-13,
+                    "{method:?} r {r} j0 {j0}: {t} vs {ball}"
+                );
             }
         }
     }
@@ -243,7 +297,10 @@ fn hereditary_sum_matches_a_long_direct_sum() {
     // remaining tail is below 1e-7 of the sum for these kernels).
     for (omega_tau, delta) in [(1e-3, -1e-3), (0.1, 1e-3), (10.0, -1e-4), (1.0, 1e-3)] {
         let tau = omega_tau / OMEGA;
-        let kernel = Hereditary::exponential(1e6, tau).unwrap().with_tolerance(1e-7).unwrap();
+        let kernel = Hereditary::exponential(1e6, tau)
+            .unwrap()
+            .with_tolerance(1e-7)
+            .unwrap();
         let p = Orbit::new(OMEGA, delta).at(0.3);
         let (theta, omega) = (p.phase(), p.frequency());
         let mut direct = 0.0_f64;
@@ -254,7 +311,12 @@ fn hereditary_sum_matches_a_long_direct_sum() {
             direct += k * k * g / (den * den);
         }
         let sum = kernel.harmonic_sum(&p);
-        assert!(rel(sum.value, direct) < 1e-6, "Omega tau {omega_tau}: {} vs {direct} ({} harmonics)", sum.value, sum.harmonics);
+        assert!(
+            rel(sum.value, direct) < 1e-6,
+            "Omega tau {omega_tau}: {} vs {direct} ({} harmonics)",
+            sum.value,
+            sum.harmonics
+        );
     }
 }
 
@@ -284,5 +346,10 @@ fn regimes_follow_the_table_of_section_4() {
     assert_eq!(single.regime(), SingleImpact);
     // A kernel alone ends a gap's bounce.
     let k = Hereditary::exponential(1e6, 1e-4).unwrap();
-    assert_eq!(Scene::new(contact(1e-3, 0.0, 0.1, Threshold::None), k).unwrap().regime(), LastImpact);
+    assert_eq!(
+        Scene::new(contact(1e-3, 0.0, 0.1, Threshold::None), k)
+            .unwrap()
+            .regime(),
+        LastImpact
+    );
 }

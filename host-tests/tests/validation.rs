@@ -40,16 +40,33 @@ fn the_good_scene_is_accepted() {
 #[test]
 fn omega_must_be_finite_and_positive() {
     for (v, reason) in BAD {
-        expect(Contact { frequency: Frequency::Omega(v), ..good() }, Parameter::Omega, reason);
+        expect(
+            Contact {
+                frequency: Frequency::Omega(v),
+                ..good()
+            },
+            Parameter::Omega,
+            reason,
+        );
     }
     for v in [0.0, -0.0, -1.0] {
-        expect(Contact { frequency: Frequency::Omega(v), ..good() }, Parameter::Omega, Reason::NotPositive);
+        expect(
+            Contact {
+                frequency: Frequency::Omega(v),
+                ..good()
+            },
+            Parameter::Omega,
+            Reason::NotPositive,
+        );
     }
 }
 
 #[test]
 fn mass_and_stiffness_must_be_finite_and_positive() {
-    let ms = |mass, stiffness| Contact { frequency: Frequency::MassStiffness { mass, stiffness }, ..good() };
+    let ms = |mass, stiffness| Contact {
+        frequency: Frequency::MassStiffness { mass, stiffness },
+        ..good()
+    };
     for (v, reason) in BAD {
         expect(ms(v, 1.0), Parameter::Mass, reason);
         expect(ms(1.0, v), Parameter::Stiffness, reason);
@@ -65,16 +82,33 @@ fn mass_and_stiffness_must_be_finite_and_positive() {
 #[test]
 fn delta_must_be_finite() {
     for (v, reason) in BAD {
-        expect(Contact { offset: Offset::Delta(v), ..good() }, Parameter::Delta, reason);
+        expect(
+            Contact {
+                offset: Offset::Delta(v),
+                ..good()
+            },
+            Parameter::Delta,
+            reason,
+        );
     }
     // 2 Omega Delta underflows to zero: the scale of the offset is lost.
-    expect(Contact { offset: Offset::Delta(-1e-320), ..good() }, Parameter::Delta, Reason::Overflow);
+    expect(
+        Contact {
+            offset: Offset::Delta(-1e-320),
+            ..good()
+        },
+        Parameter::Delta,
+        Reason::Overflow,
+    );
 }
 
 #[test]
 fn preload_force_must_be_positive_and_needs_a_stiffness() {
     let with = |force| Contact {
-        frequency: Frequency::MassStiffness { mass: 1e-4, stiffness: 100.0 },
+        frequency: Frequency::MassStiffness {
+            mass: 1e-4,
+            stiffness: 100.0,
+        },
         offset: Offset::PreloadForce(force),
         ..good()
     };
@@ -84,92 +118,242 @@ fn preload_force_must_be_positive_and_needs_a_stiffness() {
     for v in [0.0, -1.0] {
         expect(with(v), Parameter::PreloadForce, Reason::NotPositive);
     }
-    expect(Contact { offset: Offset::PreloadForce(1.0), ..good() }, Parameter::PreloadForce, Reason::NeedsStiffness);
+    expect(
+        Contact {
+            offset: Offset::PreloadForce(1.0),
+            ..good()
+        },
+        Parameter::PreloadForce,
+        Reason::NeedsStiffness,
+    );
     assert!(Scene::new(with(0.01), Undamped).is_ok());
 }
 
 #[test]
 fn restitution_must_be_in_zero_one() {
     for (v, reason) in BAD {
-        expect(Contact { restitution: Restitution::Coefficient(v), ..good() }, Parameter::Restitution, reason);
-        expect(Contact { restitution: Restitution::Loss(v), ..good() }, Parameter::OneMinusRestitution, reason);
+        expect(
+            Contact {
+                restitution: Restitution::Coefficient(v),
+                ..good()
+            },
+            Parameter::Restitution,
+            reason,
+        );
+        expect(
+            Contact {
+                restitution: Restitution::Loss(v),
+                ..good()
+            },
+            Parameter::OneMinusRestitution,
+            reason,
+        );
     }
     for v in [0.0, -0.1, 1.0 + 1e-15, 2.0] {
-        expect(Contact { restitution: Restitution::Coefficient(v), ..good() }, Parameter::Restitution, Reason::OutOfRange);
+        expect(
+            Contact {
+                restitution: Restitution::Coefficient(v),
+                ..good()
+            },
+            Parameter::Restitution,
+            Reason::OutOfRange,
+        );
     }
     for v in [1.0, 1.5, -1e-300] {
-        expect(Contact { restitution: Restitution::Loss(v), ..good() }, Parameter::OneMinusRestitution, Reason::OutOfRange);
+        expect(
+            Contact {
+                restitution: Restitution::Loss(v),
+                ..good()
+            },
+            Parameter::OneMinusRestitution,
+            Reason::OutOfRange,
+        );
     }
     // R = 1 and r = 0 are valid (lossless impacts).
-    assert!(Scene::new(Contact { restitution: Restitution::Coefficient(1.0), ..good() }, Undamped).is_ok());
-    assert!(Scene::new(Contact { restitution: Restitution::Loss(0.0), ..good() }, Undamped).is_ok());
+    assert!(Scene::new(
+        Contact {
+            restitution: Restitution::Coefficient(1.0),
+            ..good()
+        },
+        Undamped
+    )
+    .is_ok());
+    assert!(Scene::new(
+        Contact {
+            restitution: Restitution::Loss(0.0),
+            ..good()
+        },
+        Undamped
+    )
+    .is_ok());
 }
 
 #[test]
 fn closing_speed_must_be_finite_and_positive() {
     for (v, reason) in BAD {
-        expect(Contact { closing_speed: v, ..good() }, Parameter::ClosingSpeed, reason);
+        expect(
+            Contact {
+                closing_speed: v,
+                ..good()
+            },
+            Parameter::ClosingSpeed,
+            reason,
+        );
     }
     for v in [0.0, -1.0] {
-        expect(Contact { closing_speed: v, ..good() }, Parameter::ClosingSpeed, Reason::NotPositive);
+        expect(
+            Contact {
+                closing_speed: v,
+                ..good()
+            },
+            Parameter::ClosingSpeed,
+            Reason::NotPositive,
+        );
     }
-    expect(Contact { closing_speed: f64::MAX, ..good() }, Parameter::ClosingSpeed, Reason::Overflow);
+    expect(
+        Contact {
+            closing_speed: f64::MAX,
+            ..good()
+        },
+        Parameter::ClosingSpeed,
+        Reason::Overflow,
+    );
 }
 
 #[test]
 fn damping_ratio_must_be_finite_and_non_negative() {
     for (v, reason) in BAD {
-        assert_eq!(Viscous::new(v), Err(Error::new(Parameter::DampingRatio, reason)));
+        assert_eq!(
+            Viscous::new(v),
+            Err(Error::new(Parameter::DampingRatio, reason))
+        );
     }
-    assert_eq!(Viscous::new(-1e-9), Err(Error::new(Parameter::DampingRatio, Reason::Negative)));
+    assert_eq!(
+        Viscous::new(-1e-9),
+        Err(Error::new(Parameter::DampingRatio, Reason::Negative))
+    );
     assert!(Viscous::new(0.0).is_ok());
 }
 
 #[test]
 fn kernel_parameters_must_be_finite_and_positive() {
     for (v, reason) in BAD {
-        assert_eq!(Hereditary::exponential(v, 1.0), Err(Error::new(Parameter::KernelAmplitude, reason)));
-        assert_eq!(Hereditary::exponential(1.0, v), Err(Error::new(Parameter::KernelTimeConstant, reason)));
+        assert_eq!(
+            Hereditary::exponential(v, 1.0),
+            Err(Error::new(Parameter::KernelAmplitude, reason))
+        );
+        assert_eq!(
+            Hereditary::exponential(1.0, v),
+            Err(Error::new(Parameter::KernelTimeConstant, reason))
+        );
     }
     for v in [0.0, -1.0] {
-        assert_eq!(Hereditary::exponential(v, 1.0), Err(Error::new(Parameter::KernelAmplitude, Reason::NotPositive)));
-        assert_eq!(Hereditary::exponential(1.0, v), Err(Error::new(Parameter::KernelTimeConstant, Reason::NotPositive)));
+        assert_eq!(
+            Hereditary::exponential(v, 1.0),
+            Err(Error::new(Parameter::KernelAmplitude, Reason::NotPositive))
+        );
+        assert_eq!(
+            Hereditary::exponential(1.0, v),
+            Err(Error::new(
+                Parameter::KernelTimeConstant,
+                Reason::NotPositive
+            ))
+        );
     }
-    assert_eq!(Hereditary::exponential(1e300, 1e10), Err(Error::new(Parameter::KernelAmplitude, Reason::Overflow)));
+    assert_eq!(
+        Hereditary::exponential(1e300, 1e10),
+        Err(Error::new(Parameter::KernelAmplitude, Reason::Overflow))
+    );
     let k = Hereditary::exponential(1.0, 1.0).unwrap();
     for v in [0.0, 1e-20, 0.2, f64::NAN] {
-        assert_eq!(k.with_tolerance(v).map(|_| ()).unwrap_err().parameter(), Parameter::HarmonicTolerance);
+        assert_eq!(
+            k.with_tolerance(v).map(|_| ()).unwrap_err().parameter(),
+            Parameter::HarmonicTolerance
+        );
     }
 }
 
 #[test]
 fn thresholds_must_be_valid_where_given_and_present_where_needed() {
-    let with = |t| Contact { threshold: t, ..good() };
+    let with = |t| Contact {
+        threshold: t,
+        ..good()
+    };
     for (v, reason) in BAD {
-        expect(with(Threshold::FractionOfFirst(v)), Parameter::ThresholdFraction, reason);
-        expect(with(Threshold::Impulse(v)), Parameter::ThresholdImpulse, reason);
+        expect(
+            with(Threshold::FractionOfFirst(v)),
+            Parameter::ThresholdFraction,
+            reason,
+        );
+        expect(
+            with(Threshold::Impulse(v)),
+            Parameter::ThresholdImpulse,
+            reason,
+        );
     }
     for v in [0.0, -0.5, 1.0, 1.5] {
-        expect(with(Threshold::FractionOfFirst(v)), Parameter::ThresholdFraction, Reason::OutOfRange);
+        expect(
+            with(Threshold::FractionOfFirst(v)),
+            Parameter::ThresholdFraction,
+            Reason::OutOfRange,
+        );
     }
     for v in [0.0, -1.0] {
-        expect(with(Threshold::Impulse(v)), Parameter::ThresholdImpulse, Reason::NotPositive);
+        expect(
+            with(Threshold::Impulse(v)),
+            Parameter::ThresholdImpulse,
+            Reason::NotPositive,
+        );
     }
     // At or above the first impulse (1 + R) v0 = 0.85: no impact would count.
-    expect(with(Threshold::Impulse(0.85)), Parameter::ThresholdImpulse, Reason::AboveFirstImpulse);
+    expect(
+        with(Threshold::Impulse(0.85)),
+        Parameter::ThresholdImpulse,
+        Reason::AboveFirstImpulse,
+    );
     // An endless regime needs one: a gap without damping, R < 1.
-    let endless = Contact { offset: Offset::Delta(1e-3), ..good() };
+    let endless = Contact {
+        offset: Offset::Delta(1e-3),
+        ..good()
+    };
     expect(endless, Parameter::Threshold, Reason::Required);
-    assert!(Scene::new(Contact { threshold: Threshold::FractionOfFirst(0.01), ..endless }, Undamped).is_ok());
+    assert!(Scene::new(
+        Contact {
+            threshold: Threshold::FractionOfFirst(0.01),
+            ..endless
+        },
+        Undamped
+    )
+    .is_ok());
     // ...and so does Delta = 0, and a preload with R = 1 and damping.
-    expect(Contact { offset: Offset::Delta(0.0), ..good() }, Parameter::Threshold, Reason::Required);
-    let r1 = Contact { restitution: Restitution::Coefficient(1.0), ..good() };
-    assert_eq!(Scene::new(r1, Viscous::new(0.01).unwrap()).unwrap_err(), Error::new(Parameter::Threshold, Reason::Required));
+    expect(
+        Contact {
+            offset: Offset::Delta(0.0),
+            ..good()
+        },
+        Parameter::Threshold,
+        Reason::Required,
+    );
+    let r1 = Contact {
+        restitution: Restitution::Coefficient(1.0),
+        ..good()
+    };
+    assert_eq!(
+        Scene::new(r1, Viscous::new(0.01).unwrap()).unwrap_err(),
+        Error::new(Parameter::Threshold, Reason::Required)
+    );
 }
 
 #[test]
 fn two_body_parameters_are_named() {
-    let ok = TwoBody { m1: 1e-3, c1: 100.0, d1: 0.0, m2: 2e-3, c2: 200.0, d2: 0.0 };
+    let ok = TwoBody {
+        m1: 1e-3,
+        c1: 100.0,
+        d1: 0.0,
+        m2: 2e-3,
+        c2: 200.0,
+        d2: 0.0,
+    };
     assert!(ok.reduce().is_ok());
     type Set = fn(&mut TwoBody<f64>, f64);
     let fields: [(Set, Parameter, bool); 6] = [
@@ -188,7 +372,11 @@ fn two_body_parameters_are_named() {
         }
         let mut b = ok;
         set(&mut b, -1.0);
-        let reason = if positive { Reason::NotPositive } else { Reason::Negative };
+        let reason = if positive {
+            Reason::NotPositive
+        } else {
+            Reason::Negative
+        };
         assert_eq!(b.reduce().unwrap_err(), Error::new(parameter, reason));
         let mut b = ok;
         set(&mut b, 0.0);
@@ -197,31 +385,83 @@ fn two_body_parameters_are_named() {
     // The same errors come back through Scene::two_body.
     let mut bad = ok;
     bad.m2 = 0.0;
-    let e = Scene::two_body(bad, Offset::Delta(-1e-3), Restitution::Coefficient(0.5), 0.1, Threshold::None, None);
-    assert_eq!(e.unwrap_err(), Error::new(Parameter::Mass2, Reason::NotPositive));
+    let e = Scene::two_body(
+        bad,
+        Offset::Delta(-1e-3),
+        Restitution::Coefficient(0.5),
+        0.1,
+        Threshold::None,
+        None,
+    );
+    assert_eq!(
+        e.unwrap_err(),
+        Error::new(Parameter::Mass2, Reason::NotPositive)
+    );
 }
 
 #[test]
 fn tolerances_margins_and_windows_are_checked() {
     for (v, reason) in BAD {
-        assert_eq!(Tolerance::new(v), Err(Error::new(Parameter::Tolerance, reason)));
-        assert_eq!(Margin::new(v, 0.0), Err(Error::new(Parameter::MarginFactor, reason)));
-        assert_eq!(Margin::new(1.0, v), Err(Error::new(Parameter::MarginExtra, reason)));
-        assert_eq!(Window::from_seconds(v, &Margin::none(), 1e-3).map(|w| w.ticks()).unwrap_err().parameter(), Parameter::Time);
-        assert_eq!(Window::from_seconds(1e-3, &Margin::none(), v).map(|w| w.ticks()).unwrap_err().parameter(), Parameter::SamplePeriod);
+        assert_eq!(
+            Tolerance::new(v),
+            Err(Error::new(Parameter::Tolerance, reason))
+        );
+        assert_eq!(
+            Margin::new(v, 0.0),
+            Err(Error::new(Parameter::MarginFactor, reason))
+        );
+        assert_eq!(
+            Margin::new(1.0, v),
+            Err(Error::new(Parameter::MarginExtra, reason))
+        );
+        assert_eq!(
+            Window::from_seconds(v, &Margin::none(), 1e-3)
+                .map(|w| w.ticks())
+                .unwrap_err()
+                .parameter(),
+            Parameter::Time
+        );
+        assert_eq!(
+            Window::from_seconds(1e-3, &Margin::none(), v)
+                .map(|w| w.ticks())
+                .unwrap_err()
+                .parameter(),
+            Parameter::SamplePeriod
+        );
     }
-    assert_eq!(Tolerance::new(0.0), Err(Error::new(Parameter::Tolerance, Reason::NotPositive)));
-    assert_eq!(Margin::new(0.99, 0.0), Err(Error::new(Parameter::MarginFactor, Reason::OutOfRange)));
-    assert_eq!(Margin::new(1.0, -1e-9), Err(Error::new(Parameter::MarginExtra, Reason::Negative)));
-    assert_eq!(Window::from_seconds(-1.0, &Margin::none(), 1e-3), Err(Error::new(Parameter::Time, Reason::Negative)));
-    assert_eq!(Window::from_seconds(1.0, &Margin::none(), 0.0), Err(Error::new(Parameter::SamplePeriod, Reason::NotPositive)));
+    assert_eq!(
+        Tolerance::new(0.0),
+        Err(Error::new(Parameter::Tolerance, Reason::NotPositive))
+    );
+    assert_eq!(
+        Margin::new(0.99, 0.0),
+        Err(Error::new(Parameter::MarginFactor, Reason::OutOfRange))
+    );
+    assert_eq!(
+        Margin::new(1.0, -1e-9),
+        Err(Error::new(Parameter::MarginExtra, Reason::Negative))
+    );
+    assert_eq!(
+        Window::from_seconds(-1.0, &Margin::none(), 1e-3),
+        Err(Error::new(Parameter::Time, Reason::Negative))
+    );
+    assert_eq!(
+        Window::from_seconds(1.0, &Margin::none(), 0.0),
+        Err(Error::new(Parameter::SamplePeriod, Reason::NotPositive))
+    );
 }
 
 #[test]
 fn errors_display_the_parameter_and_the_reason() {
-    let e = err(Contact { closing_speed: -1.0, ..good() });
+    let e = err(Contact {
+        closing_speed: -1.0,
+        ..good()
+    });
     assert_eq!(e.to_string(), "closing_speed must be > 0");
-    let e = err(Contact { offset: Offset::Delta(f64::NAN), ..good() });
+    let e = err(Contact {
+        offset: Offset::Delta(f64::NAN),
+        ..good()
+    });
     assert_eq!(e.to_string(), "gap is NaN");
     let boxed: Box<dyn std::error::Error> = Box::new(e);
     assert!(boxed.to_string().contains("gap"));
@@ -236,8 +476,18 @@ fn f32_scenes_are_validated_the_same_way() {
         closing_speed: f32::NAN,
         threshold: Threshold::None,
     };
-    assert_eq!(Scene::new(c, Undamped).unwrap_err(), Error::new(Parameter::ClosingSpeed, Reason::NotANumber));
+    assert_eq!(
+        Scene::new(c, Undamped).unwrap_err(),
+        Error::new(Parameter::ClosingSpeed, Reason::NotANumber)
+    );
     // 2 Omega^2 ... overflows f32 long before f64.
-    let c = Contact { frequency: Frequency::Omega(1e30_f32), closing_speed: 1.0, ..c };
-    assert_eq!(Scene::new(c, Undamped).unwrap_err(), Error::new(Parameter::Delta, Reason::Overflow));
+    let c = Contact {
+        frequency: Frequency::Omega(1e30_f32),
+        closing_speed: 1.0,
+        ..c
+    };
+    assert_eq!(
+        Scene::new(c, Undamped).unwrap_err(),
+        Error::new(Parameter::Delta, Reason::Overflow)
+    );
 }

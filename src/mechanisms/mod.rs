@@ -125,7 +125,8 @@ impl<F: Float, A: Dissipation<F>> Dissipation<F> for Option<A> {
         self.as_ref().map_or(F::ZERO, |m| m.rate(point))
     }
     fn asymptote(&self, orbit: &Orbit<F>) -> Asymptote<F> {
-        self.as_ref().map_or(Asymptote::zero(), |m| m.asymptote(orbit))
+        self.as_ref()
+            .map_or(Asymptote::zero(), |m| m.asymptote(orbit))
     }
 }
 

@@ -115,7 +115,12 @@ pub(crate) type Pair<F> = (F, F);
 
 /// The integral of `f` (two integrands at once) over [a, b] (a <= b) by one Gauss-Legendre
 /// panel of `nodes` points.
-pub(crate) fn panel<F: Float, G: FnMut(F) -> Pair<F>>(a: F, b: F, nodes: Nodes, f: &mut G) -> Pair<F> {
+pub(crate) fn panel<F: Float, G: FnMut(F) -> Pair<F>>(
+    a: F,
+    b: F,
+    nodes: Nodes,
+    f: &mut G,
+) -> Pair<F> {
     let mid = (a + b) * F::HALF;
     let half = (b - a) * F::HALF;
     let mut first = Compensated::new();
@@ -142,7 +147,12 @@ pub(crate) fn panel_count<F: Float>(length: F) -> (u32, bool) {
 
 /// The integral of `f` over [a, b] (a <= b) by composite Gauss-Legendre; the flag says whether
 /// the panel cap was hit (the panels are then wider than [`PANEL_WIDTH`]).
-pub(crate) fn integrate<F: Float, G: FnMut(F) -> Pair<F>>(a: F, b: F, nodes: Nodes, mut f: G) -> (Pair<F>, bool) {
+pub(crate) fn integrate<F: Float, G: FnMut(F) -> Pair<F>>(
+    a: F,
+    b: F,
+    nodes: Nodes,
+    mut f: G,
+) -> (Pair<F>, bool) {
     let (n, capped) = panel_count(b - a);
     let width = (b - a) / F::from_u32(n);
     let mut first = Compensated::new();
@@ -169,10 +179,16 @@ mod tests {
             // x^(2n-2) over [0, 1] is 1/(2n-1); and an odd top-degree term integrates to 0 on
             // the symmetric interval.
             let ((even, odd), _) = integrate(-1.0_f64, 1.0, nodes, |x: f64| {
-                (x.powi(i32::try_from(degree - 1).unwrap_or(0)), x.powi(i32::try_from(degree).unwrap_or(0)))
+                (
+                    x.powi(i32::try_from(degree - 1).unwrap_or(0)),
+                    x.powi(i32::try_from(degree).unwrap_or(0)),
+                )
             });
             let exact = 2.0 / f64::from(degree);
-            assert!((even - exact).abs() < 1e-14 * exact, "{n}: {even} vs {exact}");
+            assert!(
+                (even - exact).abs() < 1e-14 * exact,
+                "{n}: {even} vs {exact}"
+            );
             assert!(odd.abs() < 1e-14, "{n}: {odd}");
         }
     }

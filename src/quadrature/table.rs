@@ -4,9 +4,7 @@
 //! positive half of each symmetric rule is stored, as (node, weight) pairs.
 
 /// The 2-point rule, positive half.
-pub(crate) const GL2: [(f64, f64); 1] = [
-    (0.577350269189625764509, 1.0),
-];
+pub(crate) const GL2: [(f64, f64); 1] = [(0.577350269189625764509, 1.0)];
 /// The 4-point rule, positive half.
 pub(crate) const GL4: [(f64, f64); 2] = [
     (0.861136311594052575224, 0.347854845137453857373),
