@@ -408,7 +408,8 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
                     p.period()
                 };
                 let local = if t <= F::ZERO { F::ZERO } else { local };
-                -(p.hypot() / (F::TWO * orbit.omega())) * (orbit.omega() * local - p.phase()).cos()
+                -(p.hypot() / (F::TWO * orbit.omega()))
+                    * (orbit.omega() * local - p.phase()).cos_within_pi()
             }
             _ => scene.delta().min(F::ZERO),
         };

@@ -70,11 +70,16 @@ pub trait Float:
     /// host-tests sweep: its atan2 error of ~3e-3 rad is a large relative error of small
     /// phases).
     const BACKEND_ERROR: f64;
+    /// Terms of the Taylor series of [`Float::sin_within_pi`]: 10 in f64 (truncation below
+    /// 1e-18 at pi/2), 6 in f32 (below 4e-10).
+    const SIN_TERMS: u32;
 
     /// Converts an `f64` (rounds to nearest for `f32`).
     fn from_f64(x: f64) -> Self;
     /// Converts to `f64` (exact).
     fn to_f64(self) -> f64;
+    /// Converts an `f32` (exact).
+    fn from_f32(x: f32) -> Self;
     /// Converts a count (rounds to nearest for `f32` above 2^24).
     fn from_u32(n: u32) -> Self;
     /// The Gauss-Legendre rule of `n` points (n in 2, 4, 6, 8, 10, 12, 16, 20), positive half.
@@ -113,6 +118,35 @@ pub trait Float:
     /// True if NaN.
     fn is_nan(self) -> bool;
 
+    /// sin(x) for |x| <= pi, without range reduction: reflected into |y| <= pi/2
+    /// (sin(pi - y) = sin y) and summed as a Taylor series in Horner form. Absolute error a few
+    /// ULP; no table, no libm `sin` (whose range reduction costs ~3-7 KB of flash and does not
+    /// fit the Uno). Used where the model's arguments are bounded by construction.
+    #[inline]
+    fn sin_within_pi(self) -> Self {
+        let a = self.abs();
+        let quarter = Self::PI * Self::HALF;
+        let y = if a > quarter { Self::PI - a } else { a };
+        let y2 = y * y;
+        let mut acc = Self::ONE;
+        let mut k = Self::SIN_TERMS;
+        while k > 0 {
+            let denominator = Self::from_u32((2 * k) * (2 * k + 1));
+            acc = Self::ONE - y2 / denominator * acc;
+            k -= 1;
+        }
+        let s = y * acc;
+        if self < Self::ZERO {
+            -s
+        } else {
+            s
+        }
+    }
+    /// cos(x) for |x| <= pi: sin(pi/2 - |x|), see [`Float::sin_within_pi`].
+    #[inline]
+    fn cos_within_pi(self) -> Self {
+        (Self::PI * Self::HALF - self.abs()).sin_within_pi()
+    }
     /// The larger of two (NaN-free inputs).
     #[inline]
     fn max(self, other: Self) -> Self {
@@ -208,6 +242,7 @@ impl Float for f64 {
     const SINC_SERIES_LIMIT: Self = 0.05;
     const TAIL_CUTOFF: Self = 6e-6;
     const BACKEND_ERROR: f64 = 0.0;
+    const SIN_TERMS: u32 = 10;
 
     #[inline]
     fn from_f64(x: f64) -> Self {
@@ -216,6 +251,10 @@ impl Float for f64 {
     #[inline]
     fn to_f64(self) -> f64 {
         self
+    }
+    #[inline]
+    fn from_f32(x: f32) -> Self {
+        f64::from(x)
     }
     #[inline]
     fn from_u32(n: u32) -> Self {
@@ -332,6 +371,7 @@ impl Float for f32 {
     } else {
         0.0
     };
+    const SIN_TERMS: u32 = 6;
 
     #[inline]
     fn from_f64(x: f64) -> Self {
@@ -342,6 +382,10 @@ impl Float for f32 {
     #[inline]
     fn to_f64(self) -> f64 {
         f64::from(self)
+    }
+    #[inline]
+    fn from_f32(x: f32) -> Self {
+        x
     }
     #[inline]
     fn from_u32(n: u32) -> Self {
@@ -389,9 +433,24 @@ impl Float for f32 {
     fn cos(self) -> Self {
         f32_backend!(cos, cosf, self)
     }
+    /// With libm: |big| sqrt(1 + (small/big)^2), within 2 ULP and without overflow (libm's
+    /// hypotf works in f64, which drags soft-float f64 routines into f32 firmware).
     #[inline]
     fn hypot(self, y: Self) -> Self {
-        f32_backend!(hypot, hypotf, self, y)
+        #[cfg(feature = "micromath")]
+        {
+            micromath::F32Ext::hypot(self, y)
+        }
+        #[cfg(not(feature = "micromath"))]
+        {
+            let (a, b) = (libm::fabsf(self), libm::fabsf(y));
+            let (big, small) = if a >= b { (a, b) } else { (b, a) };
+            if big == 0.0 || !big.is_finite() {
+                return big + small;
+            }
+            let ratio = small / big;
+            big * libm::sqrtf(1.0 + ratio * ratio)
+        }
     }
     #[inline]
     fn exp_m1(self) -> Self {
@@ -406,7 +465,20 @@ impl Float for f32 {
         libm::ceilf(self)
     }
     fn ceil_u32(self) -> Option<u32> {
-        f64::from(self).ceil_u32()
+        let up = libm::ceilf(self);
+        // 4_294_967_040 = 2^32 - 256 is the largest f32 not above u32::MAX.
+        if up >= 0.0 && up <= 4_294_967_040.0 {
+            // In range and integral: the conversion is exact.
+            #[allow(
+                clippy::cast_possible_truncation,
+                clippy::cast_sign_loss,
+                clippy::as_conversions
+            )]
+            let n = up as u32;
+            Some(n)
+        } else {
+            None
+        }
     }
     #[inline]
     fn is_finite(self) -> bool {
@@ -415,5 +487,63 @@ impl Float for f32 {
     #[inline]
     fn is_nan(self) -> bool {
         f32::is_nan(self)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Float;
+
+    #[test]
+    fn bounded_sine_and_cosine_match_libm() {
+        let mut worst = (0.0_f64, 0.0_f32);
+        for i in -2000..=2000 {
+            let x = f64::from(i) / 2000.0 * core::f64::consts::PI;
+            worst.0 = worst
+                .0
+                .max((x.sin_within_pi() - libm::sin(x)).abs())
+                .max((x.cos_within_pi() - libm::cos(x)).abs());
+            let y = f32::from_f64(x);
+            worst.1 = worst
+                .1
+                .max((y.sin_within_pi() - libm::sinf(y)).abs())
+                .max((y.cos_within_pi() - libm::cosf(y)).abs());
+        }
+        // A few ULP of 1.
+        assert!(worst.0 < 4.0 * f64::EPSILON, "f64 {}", worst.0);
+        assert!(worst.1 < 4.0 * f32::EPSILON, "f32 {}", worst.1);
+        // Relative accuracy near 0, where the viscous loss needs it.
+        for x in [1e-30_f64, 1e-8, 1e-3, 0.05] {
+            assert!((x.sin_within_pi() / libm::sin(x) - 1.0).abs() < 2.0 * f64::EPSILON);
+        }
+    }
+
+    #[test]
+    fn native_f32_hypot_is_close_and_does_not_overflow() {
+        for (a, b) in [
+            (3.0_f32, 4.0),
+            (1e30, 1e30),
+            (1e-30, 3e-31),
+            (0.0, 0.0),
+            (0.0, -2.0),
+        ] {
+            let exact = libm::hypot(f64::from(a), f64::from(b));
+            let ours = f64::from(a.hypot(b));
+            assert!(
+                (ours - exact).abs() <= 2.5 * f64::from(f32::EPSILON) * exact,
+                "{a} {b}"
+            );
+        }
+    }
+
+    #[test]
+    fn ceil_u32_is_checked() {
+        assert_eq!(2.1_f32.ceil_u32(), Some(3));
+        assert_eq!(0.0_f64.ceil_u32(), Some(0));
+        assert_eq!(4_294_967_295.0_f64.ceil_u32(), Some(u32::MAX));
+        assert_eq!(4_294_967_295.5_f64.ceil_u32(), None);
+        assert_eq!(5e9_f32.ceil_u32(), None);
+        assert_eq!((-1.0_f32).ceil_u32(), None);
+        assert_eq!(f64::NAN.ceil_u32(), None);
     }
 }

@@ -91,12 +91,13 @@ impl<F: Float> Orbit<F> {
     }
 
     /// The generating orbit's position x(t) = -J chi(t) (physics.md sec. 2), for any t >= 0
-    /// (T-periodic): x(t) = -(h / (2 Omega)) cos(Omega t' - theta), t' = t mod T in (0, T].
+    /// (T-periodic): x(t) = -(h / (2 Omega)) cos(Omega t' - theta), t' = t mod T in (0, T]
+    /// (the argument stays in [-theta, theta], so the series of [`Float::cos_within_pi`] serves).
     #[must_use]
     pub fn position(&self, impulse: F, t: F) -> F {
         let p = self.at(impulse);
         let local = p.time_in_period(t);
-        -(p.hypot / (F::TWO * self.omega)) * (self.omega * local - p.phase).cos()
+        -(p.hypot / (F::TWO * self.omega)) * (self.omega * local - p.phase).cos_within_pi()
     }
 
     /// The generating orbit's velocity x'(t) (m/s), for any t >= 0 (T-periodic).
@@ -104,7 +105,7 @@ impl<F: Float> Orbit<F> {
     pub fn velocity(&self, impulse: F, t: F) -> F {
         let p = self.at(impulse);
         let local = p.time_in_period(t);
-        p.hypot * F::HALF * (self.omega * local - p.phase).sin()
+        p.hypot * F::HALF * (self.omega * local - p.phase).sin_within_pi()
     }
 
     /// chi(t) = cos(Omega (t - T/2)) / (2 Omega sin(Omega T / 2)) (the paper's Eq. 3 with its
@@ -114,7 +115,7 @@ impl<F: Float> Orbit<F> {
         let p = self.at(impulse);
         let local = p.time_in_period(t);
         // 1 / (2 Omega sin theta) = h / (2 Omega J)
-        (self.omega * local - p.phase).cos() * p.hypot / (F::TWO * self.omega * impulse)
+        (self.omega * local - p.phase).cos_within_pi() * p.hypot / (F::TWO * self.omega * impulse)
     }
 }
 

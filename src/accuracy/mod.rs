@@ -123,10 +123,13 @@ pub(crate) fn averaged<F: Float, D: Dissipation<F>>(
 fn zeno_undamped<F: Float>(restitution: F, j0: F) -> Option<F> {
     let row = zeno_table::RESTITUTIONS
         .iter()
-        .rposition(|&r| c::<F>(r) <= restitution)?;
-    let column = zeno_table::IMPULSES.iter().position(|&j| c::<F>(j) >= j0)?;
+        .rposition(|&r| F::from_f32(r) <= restitution)?;
+    let column = zeno_table::IMPULSES
+        .iter()
+        .position(|&j| F::from_f32(j) >= j0)?;
     let error = zeno_table::ERRORS.get(row)?.get(column)?;
-    Some(c(*error))
+    // The table is rounded up to three digits; its f32 rounding is far below that.
+    Some(F::from_f32(*error))
 }
 
 /// The semi-discrete map (physics.md sec. 6).

@@ -70,11 +70,11 @@ impl<F: Float> Dissipation<F> for Viscous<F> {
         let theta = point.phase();
         let supplement = point.supplement();
         let two_theta = F::TWO * theta;
-        // sin(2 theta) from the smaller of theta and pi - theta.
+        // sin(2 theta) from the smaller of theta and pi - theta: the argument is in (0, pi].
         let sin_two_theta = if theta <= supplement {
-            two_theta.sin()
+            two_theta.sin_within_pi()
         } else {
-            -(F::TWO * supplement).sin()
+            -(F::TWO * supplement).sin_within_pi()
         };
         let loss = one_minus_sinc(two_theta, sin_two_theta);
         let h = point.hypot();

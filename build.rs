@@ -1,0 +1,20 @@
+//! Firmware examples link with cortex-m-rt's `link.x` (and `memory.x` from the crate root),
+//! only for bare-metal ARM targets: host builds of the examples are plain programs.
+
+use std::{env, fs, path::PathBuf};
+
+fn main() {
+    let target = env::var("TARGET").unwrap_or_default();
+    if target.starts_with("thumb") {
+        let out = PathBuf::from(env::var_os("OUT_DIR").unwrap_or_default());
+        if fs::copy("memory.x", out.join("memory.x")).is_ok() {
+            println!("cargo:rustc-link-search={}", out.display());
+        }
+        println!("cargo:rustc-link-arg-examples=-Tlink.x");
+        if env::var_os("CARGO_FEATURE_DEFMT").is_some() {
+            println!("cargo:rustc-link-arg-examples=-Tdefmt.x");
+        }
+    }
+    println!("cargo:rerun-if-changed=memory.x");
+    println!("cargo:rerun-if-changed=build.rs");
+}
