@@ -467,7 +467,7 @@ impl Float for f32 {
     fn ceil_u32(self) -> Option<u32> {
         let up = libm::ceilf(self);
         // 4_294_967_040 = 2^32 - 256 is the largest f32 not above u32::MAX.
-        if up >= 0.0 && up <= 4_294_967_040.0 {
+        if (0.0..=4_294_967_040.0).contains(&up) {
             // In range and integral: the conversion is exact.
             #[allow(
                 clippy::cast_possible_truncation,

@@ -24,6 +24,7 @@
 
 mod accuracy;
 mod averaged;
+pub mod catalogue;
 mod closed;
 mod error;
 mod float;

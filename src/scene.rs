@@ -173,6 +173,97 @@ impl<F: Float> TwoBody<F> {
     }
 }
 
+impl<F: Float> Frequency<F> {
+    /// Omega, and the stiffness when given.
+    fn validate(self) -> Result<(F, Option<F>), Error> {
+        match self {
+            Self::Omega(omega) => Ok((positive(omega, Parameter::Omega)?, None)),
+            Self::MassStiffness { mass, stiffness } => {
+                let mass = positive(mass, Parameter::Mass)?;
+                let stiffness = positive(stiffness, Parameter::Stiffness)?;
+                let omega = derived((stiffness / mass).sqrt(), Parameter::Stiffness)?;
+                Ok((omega, Some(stiffness)))
+            }
+        }
+    }
+}
+
+impl<F: Float> Offset<F> {
+    /// Delta (m), from the preload force and the stiffness where needed.
+    fn validate(self, stiffness: Option<F>) -> Result<F, Error> {
+        match self {
+            Self::Delta(delta) => finite(delta, Parameter::Delta),
+            Self::PreloadForce(force) => {
+                let force = positive(force, Parameter::PreloadForce)?;
+                let stiffness =
+                    stiffness.ok_or(Error::new(Parameter::PreloadForce, Reason::NeedsStiffness))?;
+                Ok(-derived(force / stiffness, Parameter::PreloadForce)?)
+            }
+        }
+    }
+}
+
+impl<F: Float> Restitution<F> {
+    /// (R, r): R in (0, 1], r = 1 - R in [0, 1).
+    fn validate(self) -> Result<(F, F), Error> {
+        match self {
+            Self::Coefficient(r) => {
+                let r = finite(r, Parameter::Restitution)?;
+                if r > F::ZERO && r <= F::ONE {
+                    Ok((r, F::ONE - r))
+                } else {
+                    Err(Error::new(Parameter::Restitution, Reason::OutOfRange))
+                }
+            }
+            Self::Loss(loss) => {
+                let loss = finite(loss, Parameter::OneMinusRestitution)?;
+                if loss >= F::ZERO && loss < F::ONE {
+                    Ok((F::ONE - loss, loss))
+                } else {
+                    Err(Error::new(
+                        Parameter::OneMinusRestitution,
+                        Reason::OutOfRange,
+                    ))
+                }
+            }
+        }
+    }
+}
+
+impl<F: Float> Threshold<F> {
+    /// The threshold impulse P_end, if any, below the first impulse.
+    fn validate(self, first_impulse: F, restitution: F) -> Result<Option<F>, Error> {
+        match self {
+            Self::None => Ok(None),
+            Self::FractionOfFirst(fraction) => {
+                let fraction = finite(fraction, Parameter::ThresholdFraction)?;
+                if !(fraction > F::ZERO && fraction < F::ONE) {
+                    return Err(Error::new(Parameter::ThresholdFraction, Reason::OutOfRange));
+                }
+                Ok(Some(derived(
+                    fraction * first_impulse,
+                    Parameter::ThresholdFraction,
+                )?))
+            }
+            Self::Impulse(impulse) => {
+                let impulse = positive(impulse, Parameter::ThresholdImpulse)?;
+                if impulse >= first_impulse {
+                    return Err(Error::new(
+                        Parameter::ThresholdImpulse,
+                        Reason::AboveFirstImpulse,
+                    ));
+                }
+                // The generating-impulse threshold must stay representable.
+                derived(
+                    impulse * F::TWO * restitution / (F::ONE + restitution),
+                    Parameter::ThresholdImpulse,
+                )?;
+                Ok(Some(impulse))
+            }
+        }
+    }
+}
+
 /// A validated contact event: after construction nothing can fail.
 ///
 /// `D` names the mechanisms acting between impacts ([`Undamped`], [`Viscous`],
@@ -209,44 +300,10 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         dissipation: D,
         reduction: Option<Reduction<F>>,
     ) -> Result<Self, Error> {
-        let (omega, stiffness) = match contact.frequency {
-            Frequency::Omega(omega) => (positive(omega, Parameter::Omega)?, None),
-            Frequency::MassStiffness { mass, stiffness } => {
-                let mass = positive(mass, Parameter::Mass)?;
-                let stiffness = positive(stiffness, Parameter::Stiffness)?;
-                let omega = derived((stiffness / mass).sqrt(), Parameter::Stiffness)?;
-                (omega, Some(stiffness))
-            }
-        };
+        let (omega, stiffness) = contact.frequency.validate()?;
         let stiffness = stiffness.or(reduction.map(|r| r.reduced_mass * r.omega * r.omega));
-        let delta = match contact.offset {
-            Offset::Delta(delta) => finite(delta, Parameter::Delta)?,
-            Offset::PreloadForce(force) => {
-                let force = positive(force, Parameter::PreloadForce)?;
-                let stiffness =
-                    stiffness.ok_or(Error::new(Parameter::PreloadForce, Reason::NeedsStiffness))?;
-                -derived(force / stiffness, Parameter::PreloadForce)?
-            }
-        };
-        let (restitution, loss) = match contact.restitution {
-            Restitution::Coefficient(r) => {
-                let r = finite(r, Parameter::Restitution)?;
-                if !(r > F::ZERO && r <= F::ONE) {
-                    return Err(Error::new(Parameter::Restitution, Reason::OutOfRange));
-                }
-                (r, F::ONE - r)
-            }
-            Restitution::Loss(loss) => {
-                let loss = finite(loss, Parameter::OneMinusRestitution)?;
-                if !(loss >= F::ZERO && loss < F::ONE) {
-                    return Err(Error::new(
-                        Parameter::OneMinusRestitution,
-                        Reason::OutOfRange,
-                    ));
-                }
-                (F::ONE - loss, loss)
-            }
-        };
+        let delta = contact.offset.validate(stiffness)?;
+        let (restitution, loss) = contact.restitution.validate()?;
         let closing_speed = positive(contact.closing_speed, Parameter::ClosingSpeed)?;
         let first_impulse = derived(
             (F::ONE + restitution) * closing_speed,
@@ -256,34 +313,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
             F::TWO * restitution * closing_speed,
             Parameter::ClosingSpeed,
         )?;
-        let threshold = match contact.threshold {
-            Threshold::None => None,
-            Threshold::FractionOfFirst(fraction) => {
-                let fraction = finite(fraction, Parameter::ThresholdFraction)?;
-                if !(fraction > F::ZERO && fraction < F::ONE) {
-                    return Err(Error::new(Parameter::ThresholdFraction, Reason::OutOfRange));
-                }
-                Some(derived(
-                    fraction * first_impulse,
-                    Parameter::ThresholdFraction,
-                )?)
-            }
-            Threshold::Impulse(impulse) => {
-                let impulse = positive(impulse, Parameter::ThresholdImpulse)?;
-                if impulse >= first_impulse {
-                    return Err(Error::new(
-                        Parameter::ThresholdImpulse,
-                        Reason::AboveFirstImpulse,
-                    ));
-                }
-                // The generating-impulse threshold must stay representable.
-                derived(
-                    impulse * F::TWO * restitution / (F::ONE + restitution),
-                    Parameter::ThresholdImpulse,
-                )?;
-                Some(impulse)
-            }
-        };
+        let threshold = contact.threshold.validate(first_impulse, restitution)?;
         if delta != F::ZERO {
             // Every scale the model forms from Omega and Delta must be finite and non-zero.
             let q = F::TWO * omega * delta.abs();

@@ -121,12 +121,15 @@ pub(crate) fn averaged<F: Float, D: Dissipation<F>>(
 /// The averaged tier's error on an undamped preload, read conservatively from the generated
 /// table (the next smaller R, the next larger j0); `None` outside R >= 0.05, j0 <= 100.
 fn zeno_undamped<F: Float>(restitution: F, j0: F) -> Option<F> {
+    // The keys are f32 (0.05 is stored as 0.050000001): compare with a 1e-6 relative slack,
+    // far below what moves the three-digit, rounded-up errors.
+    let slack = c::<F>(1e-6);
     let row = zeno_table::RESTITUTIONS
         .iter()
-        .rposition(|&r| F::from_f32(r) <= restitution)?;
+        .rposition(|&r| F::from_f32(r) <= restitution * (F::ONE + slack))?;
     let column = zeno_table::IMPULSES
         .iter()
-        .position(|&j| F::from_f32(j) >= j0)?;
+        .position(|&j| F::from_f32(j) >= j0 * (F::ONE - slack))?;
     let error = zeno_table::ERRORS.get(row)?.get(column)?;
     // The table is rounded up to three digits; its f32 rounding is far below that.
     Some(F::from_f32(*error))
