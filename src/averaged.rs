@@ -288,8 +288,8 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
             Regime::ZenoAccumulation | Regime::LastImpact
         );
         let cut = if ends { self.cutoff() } else { F::ZERO };
-        // Never march below the smallest normal impulse (ln J would reach -inf, J/|E1| 0/0).
-        let floor = (F::MIN_POSITIVE * F::from_f64(1e3)).ln();
+        // Never march below the impulse floor (the phase would turn subnormal, E1 vanish).
+        let floor = scene.impulse_floor().ln();
         let s_cut = Some(if cut > F::ZERO {
             cut.ln().max(floor)
         } else {

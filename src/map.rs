@@ -76,8 +76,13 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
         let period = point.period();
         let returning = j + scene.dissipation().rate(&point) * period;
         if returning <= F::ZERO {
-            // No return: the impact just made was the last (a preload always returns: its
-            // flight then ends the bounce with a vanishing impulse).
+            // The first-order loss exceeds the flight's impulse (heavy damping). In a gap the
+            // impact just made was the last; a preload always returns, with a vanishing
+            // impulse: the bounce ends after this flight, or, in an endless regime, the next
+            // impact is below any threshold.
+            if endless {
+                break Stop::BelowThreshold;
+            }
             let end = if preload {
                 time.value() + period
             } else {

@@ -125,6 +125,11 @@ pub struct Reduction<F> {
     pub frequency_mismatch: F,
 }
 
+/// See [`Scene::impulse_floor`].
+fn impulse_floor<F: Float>(orbit: &Orbit<F>) -> F {
+    F::MIN_POSITIVE * F::from_f64(1e3) * orbit.offset_impulse().abs().max(F::ONE)
+}
+
 fn close<F: Float>(a: F, b: F) -> bool {
     (a - b).abs() <= F::from_f64(8.0) * F::EPSILON * a.abs().max(b.abs())
 }
@@ -339,6 +344,16 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         }
         let orbit = Orbit::new(omega, delta);
         let asymptote = restitution_asymptote(loss, &orbit).plus(dissipation.asymptote(&orbit));
+        if let Some(p_end) = threshold {
+            let generating = p_end * F::TWO * restitution / (F::ONE + restitution);
+            if generating < impulse_floor(&orbit) {
+                let parameter = match contact.threshold {
+                    Threshold::FractionOfFirst(_) => Parameter::ThresholdFraction,
+                    _ => Parameter::ThresholdImpulse,
+                };
+                return Err(Error::new(parameter, Reason::Overflow));
+            }
+        }
         Ok(Self {
             orbit,
             restitution,
@@ -433,6 +448,14 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
     }
     pub(crate) fn rate_at(&self, point: &OrbitPoint<F>) -> F {
         restitution_rate(self.loss, point) + self.dissipation.rate(point)
+    }
+    /// The smallest generating impulse the model resolves (m/s): 1e3 times the smallest
+    /// normal float, times max(1, 2 Omega |Delta|) so that the phase J / (2 Omega |Delta|) stays
+    /// normal too. Below it the averaged envelope follows its asymptote, and thresholds are
+    /// refused ([`Reason::Overflow`]).
+    #[must_use]
+    pub fn impulse_floor(&self) -> F {
+        impulse_floor(&self.orbit)
     }
     /// The small-impulse asymptote of -E1 (physics.md sec. 4).
     #[must_use]

@@ -491,3 +491,26 @@ fn f32_scenes_are_validated_the_same_way() {
         Error::new(Parameter::Delta, Reason::Overflow)
     );
 }
+
+#[test]
+fn thresholds_below_the_resolvable_impulse_are_refused() {
+    // 1e-300 of the first impulse at Omega |Delta| = 1: below 1e3 * MIN_POSITIVE * 2 Omega |Delta|.
+    let c = Contact {
+        threshold: Threshold::FractionOfFirst(1e-306),
+        ..good()
+    };
+    expect(c, Parameter::ThresholdFraction, Reason::Overflow);
+    let c = Contact {
+        threshold: Threshold::Impulse(1e-306),
+        ..good()
+    };
+    expect(c, Parameter::ThresholdImpulse, Reason::Overflow);
+    assert!(Scene::new(
+        Contact {
+            threshold: Threshold::FractionOfFirst(1e-250),
+            ..good()
+        },
+        Undamped
+    )
+    .is_ok());
+}

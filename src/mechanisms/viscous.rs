@@ -8,9 +8,10 @@ use crate::Float;
 /// Viscous damping of ratio zeta (x'' + 2 zeta Omega x' + Omega^2 x = 0 in flight).
 ///
 /// E1 term: -zeta Omega (J^2 + 4 Omega^2 Delta^2) / J * (1 - sin(2 theta) / (2 theta)),
-/// evaluated as -zeta Omega h (h / J) (1 - sinc(2 theta)) with the series of physics.md sec. 3
-/// below [`Float::SINC_SERIES_LIMIT`] and sin(2 theta) = -sin(2 (pi - theta)) for a gap, so it
-/// is accurate to a few ULP for every J > 0.
+/// evaluated as -zeta Omega (2 h theta)(2 h theta / J) (1 - sinc(2 theta)) / (2 theta)^2 with
+/// the series of physics.md sec. 3 below [`Float::SINC_SERIES_LIMIT`] and
+/// sin(2 theta) = -sin(2 (pi - theta)) for a gap, so it is accurate to a few ULP for every
+/// J > 0 and does not underflow before J does.
 ///
 /// ```
 /// use contact_bounce::{Dissipation, Orbit, Viscous};
@@ -43,14 +44,17 @@ impl<F: Float> Viscous<F> {
     }
 }
 
-/// 1 - sin(y)/y for y in [0, 2 pi), given sin(y) computed stably by the caller.
-pub(crate) fn one_minus_sinc<F: Float>(y: F, sin_y: F) -> F {
+/// (1 - sin(y)/y) / y^2 for y in (0, 2 pi), given sin(y) computed stably by the caller: the
+/// series 1/6 (1 - y^2/20 (1 - y^2/42 (1 - y^2/72))) below [`Float::SINC_SERIES_LIMIT`]
+/// (physics.md sec. 3), the direct form above. Dividing by y^2 keeps the loss from underflowing
+/// where y^2 would (y < 1e-154 in f64, 1e-19 in f32).
+pub(crate) fn one_minus_sinc_over_square<F: Float>(y: F, sin_y: F) -> F {
     if y.abs() < F::SINC_SERIES_LIMIT {
         let y2 = y * y;
         let c = |n: f64| F::from_f64(n);
-        y2 / c(6.0) * (F::ONE - y2 / c(20.0) * (F::ONE - y2 / c(42.0) * (F::ONE - y2 / c(72.0))))
+        (F::ONE - y2 / c(20.0) * (F::ONE - y2 / c(42.0) * (F::ONE - y2 / c(72.0)))) / c(6.0)
     } else {
-        F::ONE - sin_y / y
+        (F::ONE - sin_y / y) / (y * y)
     }
 }
 
@@ -67,6 +71,10 @@ impl<F: Float> Dissipation<F> for Viscous<F> {
         false
     }
     fn rate(&self, point: &OrbitPoint<F>) -> F {
+        if self.zeta <= F::ZERO {
+            // Exactly no loss (and no 0 * inf where h^2/J overflows in a gap as J -> 0).
+            return F::ZERO;
+        }
         let theta = point.phase();
         let supplement = point.supplement();
         let two_theta = F::TWO * theta;
@@ -76,9 +84,11 @@ impl<F: Float> Dissipation<F> for Viscous<F> {
         } else {
             -(F::TWO * supplement).sin_within_pi()
         };
-        let loss = one_minus_sinc(two_theta, sin_two_theta);
-        let h = point.hypot();
-        -self.zeta * point.natural_frequency() * h * (h / point.impulse()) * loss
+        let loss = one_minus_sinc_over_square(two_theta, sin_two_theta);
+        // (h^2 / J) (1 - sinc(2 theta)) = (2 h theta) (2 h theta / J) loss: 2 h theta ~ 2 J for
+        // a small phase, so nothing underflows before J itself does.
+        let scaled = point.hypot() * two_theta;
+        -self.zeta * point.natural_frequency() * scaled * (scaled / point.impulse()) * loss
     }
     fn asymptote(&self, orbit: &Orbit<F>) -> Asymptote<F> {
         let omega = orbit.omega();

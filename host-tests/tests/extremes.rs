@@ -1,0 +1,101 @@
+//! Numerical stability at the extremes of the core's domain: every tier, f32 and f64, over a
+//! grid spanning Omega 10..1e7 rad/s, |Delta| 1e-9..1e-1 m on both sides and 0, R 0.01..0.9999
+//! (given as r), zeta 0..2 and j0 = J_B / (Omega |Delta|) 1e-6..1e4. No panic, no NaN: every
+//! time is finite and non-negative or explicitly endless, and counts likewise.
+
+use contact_bounce::{
+    Contact, Count, Float, Frequency, Method, Nodes, Offset, Prediction, Restitution, Scene,
+    Threshold, Time, Tolerance, Viscous,
+};
+
+fn sane<F: Float>(p: &Prediction<F>, what: &str) {
+    for t in [p.end_time, p.last_above_time] {
+        if let Time::At(t) = t {
+            assert!(t.is_finite() && t >= F::ZERO, "{what}: time {t:?} in {p:?}");
+        }
+    }
+    for n in [p.impacts_above, p.impacts_total] {
+        if let Count::Finite(n) = n {
+            assert!(n.is_finite() && n >= F::ONE, "{what}: count {n:?} in {p:?}");
+        }
+    }
+    if let Some(e) = p.expected_error {
+        assert!(
+            e.is_finite() && e >= F::ZERO,
+            "{what}: expected error {e:?}"
+        );
+    }
+    if p.regime.is_endless() {
+        assert_eq!(p.end_time, Time::Never, "{what}");
+    }
+}
+
+fn sweep<F: Float>() -> usize {
+    let mut checked = 0;
+    let methods = [
+        Method::Closed,
+        Method::Averaged(Nodes::N2),
+        Method::Averaged(Nodes::N8),
+        Method::Map { max_impacts: 2_000 },
+        Method::Auto(Tolerance::new(F::from_f64(0.01)).unwrap_or_else(|_| unreachable!())),
+    ];
+    for omega in [10.0, 1e3, 1e7] {
+        for delta in [-1e-1, -1e-5, -1e-9, 0.0, 1e-9, 1e-5, 1e-1] {
+            for r in [0.99, 0.5, 1e-2, 1e-4, 0.0] {
+                for zeta in [0.0, 1e-3, 0.1, 0.99, 1.0, 2.0] {
+                    for j0 in [1e-6, 1e-2, 1.0, 1e2, 1e4] {
+                        let scale = if delta == 0.0 {
+                            omega * 1e-5
+                        } else {
+                            omega * f64::abs(delta)
+                        };
+                        let restitution = 1.0 - r;
+                        let v0 = j0 * scale / (2.0 * restitution);
+                        for threshold in [
+                            Threshold::None,
+                            Threshold::FractionOfFirst(F::from_f64(1e-3)),
+                        ] {
+                            let contact = Contact {
+                                frequency: Frequency::Omega(F::from_f64(omega)),
+                                offset: Offset::Delta(F::from_f64(delta)),
+                                restitution: Restitution::Loss(F::from_f64(r)),
+                                closing_speed: F::from_f64(v0),
+                                threshold,
+                            };
+                            let Ok(damping) = Viscous::new(F::from_f64(zeta)) else {
+                                panic!("zeta {zeta}")
+                            };
+                            let Ok(scene) = Scene::new(contact, damping) else {
+                                // Only an endless regime without a threshold may be refused here.
+                                assert!(matches!(threshold, Threshold::None));
+                                continue;
+                            };
+                            for method in methods {
+                                let what = format!("Omega {omega} Delta {delta} r {r} zeta {zeta} j0 {j0} {method:?}");
+                                sane(&scene.predict(method), &what);
+                                checked += 1;
+                            }
+                            let averaged = scene.averaged(Nodes::N4);
+                            for t in [0.0, 1e-9, 1e-3, 1.0, 1e6] {
+                                let point = averaged.envelope(F::from_f64(t));
+                                let point = point.unwrap_or_else(|e| panic!("envelope error at {t}: {e} (Omega {omega} Delta {delta} r {r} zeta {zeta} j0 {j0})"));
+                                assert!(point.impulse.is_finite() && point.impulse >= F::ZERO, "J({t}) = {:?} (Omega {omega} Delta {delta} r {r} zeta {zeta} j0 {j0} {:?})", point.impulse, scene.regime());
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    checked
+}
+
+#[test]
+fn every_tier_is_sane_over_the_extremes_in_f64() {
+    assert!(sweep::<f64>() > 20_000);
+}
+
+#[test]
+fn every_tier_is_sane_over_the_extremes_in_f32() {
+    assert!(sweep::<f32>() > 20_000);
+}
