@@ -1,0 +1,184 @@
+//! `Method::Auto` picks the cheapest tier whose expected error meets the tolerance, and says
+//! when none does; windows round up, check every conversion and refuse endless predictions.
+
+use contact_bounce::{
+    catalogue, ClosedForm, Contact, Error, Frequency, Margin, Method, Nodes, Offset, Parameter,
+    Reason, Restitution, Scene, Threshold, Tier, Tolerance, Undamped, Viscous, Window,
+};
+
+fn preload(r: f64, zeta: f64, j0: f64) -> Scene<f64, Viscous<f64>> {
+    let v0 = j0 * 1000.0 * 1e-3 / (2.0 * r);
+    let contact = Contact {
+        frequency: Frequency::Omega(1000.0),
+        offset: Offset::Delta(-1e-3),
+        restitution: Restitution::Coefficient(r),
+        closing_speed: v0,
+        threshold: Threshold::None,
+    };
+    Scene::new(contact, Viscous::new(zeta).unwrap()).unwrap()
+}
+
+fn auto(scene: &Scene<f64, Viscous<f64>>, tolerance: f64) -> contact_bounce::Prediction<f64> {
+    scene.predict(Method::Auto(Tolerance::new(tolerance).unwrap()))
+}
+
+#[test]
+fn auto_takes_the_exact_sums_when_there_is_no_damping() {
+    let scene = preload(0.5, 0.0, 3.0);
+    let p = auto(&scene, 1e-8);
+    assert_eq!(p.tier, Tier::Closed(ClosedForm::Undamped));
+    assert!(p.promises(Tolerance::new(1e-8).unwrap()));
+}
+
+#[test]
+fn auto_takes_the_closed_form_when_its_error_fits() {
+    // R = 0.5, zeta = 0.005, j0 = 0.5: t_b1v expected 2.5 % + 2.1 % (atan, x = 0.25) = 4.6 %.
+    let scene = preload(0.5, 0.005, 0.5);
+    let p = auto(&scene, 0.05);
+    assert_eq!(p.tier, Tier::Closed(ClosedForm::Tb1v));
+    assert!(p.expected_error.unwrap() <= 0.05);
+}
+
+#[test]
+fn auto_takes_the_only_tier_that_fits() {
+    // At 1 %: t_b1v (4.6 %) and the averaged model (0.7 % + 1 % for damping) do not fit; the
+    // map (0.3 % for zeta <= 0.01) does.
+    let scene = preload(0.5, 0.005, 0.5);
+    let p = auto(&scene, 0.01);
+    assert_eq!(p.tier, Tier::Map);
+    assert!(p.promises(Tolerance::new(0.01).unwrap()));
+    // Heavier damping: the map gives 2.5 %, the averaged model 1 % + the table's 0.0177 % for
+    // R = 0.9 at j0 <= 0.3: only the averaged model fits 2 %.
+    let scene = preload(0.9, 0.05, 0.3);
+    let p = auto(&scene, 0.02);
+    assert_eq!(p.tier, Tier::Averaged(Nodes::N8));
+}
+
+#[test]
+fn auto_says_when_it_cannot_promise() {
+    // The tactile dome at 0.1 %: nothing in physics.md sec. 6 promises that with damping.
+    let dome = catalogue::TACTILE_DOME.scene::<f64>().unwrap();
+    let tolerance = Tolerance::new(1e-3).unwrap();
+    let p = dome.predict(Method::Auto(tolerance));
+    assert!(!p.promises(tolerance));
+    // It still answers, with the smallest expected error on offer.
+    let candidates = [
+        Method::Closed,
+        Method::Averaged(Nodes::N8),
+        Method::Map {
+            max_impacts: 100_000,
+        },
+    ];
+    let best = candidates
+        .iter()
+        .filter_map(|m| dome.predict(*m).expected_error)
+        .fold(f64::INFINITY, f64::min);
+    assert_eq!(p.expected_error, Some(best));
+}
+
+#[test]
+fn windows_round_up_and_check_every_conversion() {
+    let margin = Margin::none();
+    assert_eq!(
+        Window::from_seconds(1.0e-3, &margin, 1.0e-3)
+            .unwrap()
+            .ticks(),
+        1
+    );
+    assert_eq!(
+        Window::from_seconds(1.000_001e-3, &margin, 1.0e-3)
+            .unwrap()
+            .ticks(),
+        2
+    );
+    assert_eq!(
+        Window::from_seconds(0.0, &margin, 1.0e-3).unwrap().ticks(),
+        0
+    );
+    // u32::MAX ticks fit; one more does not, and that is an error, not a wrap or a saturation.
+    assert_eq!(
+        Window::from_seconds(4_294_967_295.0, &margin, 1.0)
+            .unwrap()
+            .ticks(),
+        u32::MAX
+    );
+    assert_eq!(
+        Window::from_seconds(4_294_967_296.0, &margin, 1.0),
+        Err(Error::new(Parameter::SamplePeriod, Reason::Overflow))
+    );
+    // The margin multiplies, then adds.
+    let margin = Margin::new(2.0, 0.5e-3).unwrap();
+    assert_eq!(
+        Window::from_seconds(1.0e-3, &margin, 0.25e-3)
+            .unwrap()
+            .ticks(),
+        10
+    );
+}
+
+#[test]
+fn an_endless_prediction_has_no_window() {
+    let periodic = Scene::new(
+        Contact {
+            frequency: Frequency::Omega(1000.0),
+            offset: Offset::Delta(-1e-3),
+            restitution: Restitution::Coefficient(1.0),
+            closing_speed: 0.1,
+            threshold: Threshold::None,
+        },
+        Undamped,
+    )
+    .unwrap();
+    let p = periodic.predict(Method::Closed);
+    assert_eq!(
+        Window::from_prediction(&p, &Margin::none(), 1e-3),
+        Err(Error::new(Parameter::Time, Reason::Endless))
+    );
+}
+
+#[test]
+fn the_expected_error_widens_the_window() {
+    let dome = catalogue::TACTILE_DOME.scene::<f64>().unwrap();
+    let p = dome.predict(Method::Closed);
+    let plain = Window::from_prediction(&p, &Margin::none(), 1e-6)
+        .unwrap()
+        .ticks();
+    let widened = Window::from_prediction(&p, &Margin::none().with_expected_error(&p), 1e-6)
+        .unwrap()
+        .ticks();
+    let expected = p.expected_error.unwrap();
+    assert!(f64::from(widened) >= f64::from(plain) * (1.0 + expected) - 1.0);
+    assert!(widened > plain);
+}
+
+#[test]
+fn const_window_matches_the_runtime_one() {
+    const T: f64 = match contact_bounce::preload_bounce_time(5e-5, 5000.0, 1.0, 0.5, 0.7) {
+        Ok(t) => t.seconds,
+        Err(_) => panic!(),
+    };
+    let dome = Scene::new(catalogue::TACTILE_DOME.contact::<f64>(), Undamped).unwrap();
+    assert!((T / dome.t_b1().unwrap().time - 1.0).abs() < 1e-14);
+    for (seconds, factor, period) in [(T, 1.5, 1e-5), (1e-3, 1.0, 1e-3), (0.37, 2.0, 1e-4)] {
+        let runtime =
+            Window::from_seconds(seconds, &Margin::new(factor, 0.0).unwrap(), period).unwrap();
+        assert_eq!(
+            contact_bounce::window_ticks(seconds, factor, period),
+            Ok(runtime.ticks())
+        );
+    }
+    assert_eq!(
+        contact_bounce::window_ticks(1e10, 1.0, 1e-3),
+        Err(Error::new(Parameter::SamplePeriod, Reason::Overflow))
+    );
+    assert_eq!(
+        contact_bounce::preload_bounce_time(5e-5, 5000.0, 1.0, 0.5, 1.0)
+            .unwrap_err()
+            .parameter(),
+        Parameter::Restitution
+    );
+    assert_eq!(
+        contact_bounce::preload_bounce_time(f64::NAN, 5000.0, 1.0, 0.5, 0.5).unwrap_err(),
+        Error::new(Parameter::Mass, Reason::NotANumber)
+    );
+}
