@@ -239,7 +239,8 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
         }
         let expected = accuracy::with_reduction(
             self.scene,
-            accuracy::averaged(self.scene, impacts_total.value(), impacts_above.value()),
+            accuracy::averaged(self.scene, impacts_total.value())
+                .map(|e| e + accuracy::quadrature::<F>(self.nodes)),
         );
         if expected.is_none() {
             approximations = approximations.with(Approximations::OUTSIDE_VALIDITY);

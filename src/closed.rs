@@ -293,7 +293,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         let rate = (self.loss() / F::PI + zeta) * self.omega();
         (rate > F::ZERO).then(|| Estimate {
             time: (self.start_impulse() / end).ln() / rate,
-            expected_error: Some(accuracy::discreteness(self.loss(), None)),
+            expected_error: accuracy::discreteness(self).map(|(bias, _)| bias + F::from_f64(0.02)),
         })
     }
 

@@ -161,9 +161,9 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
     } else {
         (end_time, impacts_total)
     };
-    let mut expected = accuracy::with_reduction(scene, accuracy::map(scene));
+    let mut expected = accuracy::with_reduction(scene, accuracy::map(scene, impacts_total.value()));
     if approximations.contains(Approximations::MAP_CONTINUED_AVERAGED) {
-        let averaged = accuracy::averaged(scene, impacts_total.value(), impacts_above.value());
+        let averaged = accuracy::averaged(scene, impacts_total.value());
         expected = match (expected, averaged) {
             (Some(a), Some(b)) => Some(a.max(b)),
             _ => None,

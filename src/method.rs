@@ -100,11 +100,8 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         // Expected errors and rough costs (in E1 evaluations) of the other tiers, known before
         // running them.
         let estimate = closed.impacts_total.value();
-        let averaged_error = accuracy::with_reduction(
-            self,
-            accuracy::averaged(self, estimate, closed.impacts_above.value()),
-        );
-        let map_error = accuracy::with_reduction(self, accuracy::map(self));
+        let averaged_error = accuracy::with_reduction(self, accuracy::averaged(self, estimate));
+        let map_error = accuracy::with_reduction(self, accuracy::map(self, estimate));
         let start = self.start_impulse();
         let floor = self
             .threshold_generating()

@@ -1,1 +1,5 @@
-//! Host-side checks of `contact-bounce`.
+//! Host-side checks of `contact-bounce`: the exact reference simulation (std, f64) and the
+//! tools built on it.
+
+pub mod grid;
+pub mod reference;

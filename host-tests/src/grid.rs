@@ -1,0 +1,273 @@
+//! The grid of scenes the core is checked on against the reference: every regime of
+//! physics.md sec. 4 and the switches of sec. 7 (j0, R, zeta and the sign of Delta varied).
+
+use contact_bounce::{Contact, Frequency, Offset, Restitution, Scene, Threshold, Viscous};
+
+use crate::reference::OneBody;
+
+/// One scene of the grid, in the reference's terms and the core's.
+#[derive(Debug, Clone)]
+pub struct GridScene {
+    /// A readable name.
+    pub name: String,
+    /// The regime family it was built for.
+    pub family: &'static str,
+    /// The reference's input.
+    pub reference: OneBody,
+    /// j0 = 2 R v0 / (Omega |Delta|) (Omega 1e-5 m scale at Delta = 0).
+    pub j0: f64,
+}
+
+impl GridScene {
+    /// The core's scene in f64.
+    ///
+    /// # Errors
+    /// When the core refuses the scene.
+    pub fn core(&self) -> Result<Scene<f64, Viscous<f64>>, contact_bounce::Error> {
+        let r = &self.reference;
+        Scene::new(
+            Contact {
+                frequency: Frequency::Omega(r.omega),
+                offset: Offset::Delta(r.delta),
+                restitution: Restitution::Loss(1.0 - r.restitution),
+                closing_speed: r.closing_speed,
+                threshold: r.threshold.map_or(Threshold::None, Threshold::Impulse),
+            },
+            Viscous::new(r.zeta)?,
+        )
+    }
+}
+
+fn scene(
+    family: &'static str,
+    delta: f64,
+    r: f64,
+    zeta: f64,
+    j0: f64,
+    fraction: Option<f64>,
+) -> GridScene {
+    let omega = 1000.0;
+    let scale = if delta == 0.0 {
+        omega * 1e-3
+    } else {
+        omega * delta.abs()
+    };
+    let v0 = j0 * scale / (2.0 * r);
+    GridScene {
+        name: format!(
+            "{family} R={r} zeta={zeta} j0={j0}{}",
+            fraction.map_or(String::new(), |f| format!(" P_end={f}P0"))
+        ),
+        family,
+        reference: OneBody {
+            omega,
+            delta,
+            restitution: r,
+            zeta,
+            closing_speed: v0,
+            threshold: fraction.map(|f| f * (1.0 + r) * v0),
+        },
+        j0,
+    }
+}
+
+/// The grid: about 400 scenes.
+#[must_use]
+pub fn grid() -> Vec<GridScene> {
+    let mut out = Vec::new();
+    for r in [0.05, 0.3, 0.5, 0.7, 0.9, 0.99] {
+        for zeta in [0.0, 0.001, 0.01, 0.05, 0.1, 0.3] {
+            for j0 in [0.1, 0.5, 1.0, 3.0, 10.0] {
+                out.push(scene("preload", -1e-3, r, zeta, j0, None));
+            }
+        }
+    }
+    for r in [0.5, 0.9, 0.99] {
+        for zeta in [0.001, 0.01, 0.05] {
+            for j0 in [0.5, 2.0, 10.0, 50.0] {
+                out.push(scene("gap", 1e-3, r, zeta, j0, None));
+            }
+        }
+    }
+    for r in [0.5, 0.9, 0.99] {
+        for j0 in [0.1, 1.0, 10.0] {
+            out.push(scene("gap-undamped", 1e-3, r, 0.0, j0, Some(1e-3)));
+        }
+    }
+    for r in [0.3, 0.9, 1.0] {
+        for zeta in [0.0, 0.01, 0.1] {
+            if r == 1.0 && zeta == 0.0 {
+                continue;
+            }
+            out.push(scene("grazing", 0.0, r, zeta, 1.0, Some(1e-3)));
+        }
+    }
+    for zeta in [0.001, 0.01, 0.1] {
+        for j0 in [0.1, 1.0, 10.0] {
+            out.push(scene("preload-R1", -1e-3, 1.0, zeta, j0, Some(1e-2)));
+        }
+    }
+    for r in [0.5, 0.9] {
+        for j0 in [0.5, 5.0] {
+            out.push(scene("preload-threshold", -1e-3, r, 0.01, j0, Some(1e-2)));
+        }
+    }
+    for switch in contact_bounce::catalogue::ALL {
+        let omega = (switch.stiffness / switch.mass).sqrt();
+        let delta = -switch.preload_force / switch.stiffness;
+        let r = switch.restitution;
+        out.push(GridScene {
+            name: switch.name.to_owned(),
+            family: "catalogue",
+            reference: OneBody {
+                omega,
+                delta,
+                restitution: r,
+                zeta: switch.damping_ratio,
+                closing_speed: switch.closing_speed,
+                threshold: None,
+            },
+            j0: 2.0 * r * switch.closing_speed / (omega * delta.abs()),
+        });
+    }
+    out.push(scene("single", 1e-3, 0.5, 1.5, 1.0, None));
+    out
+}
+
+/// One tier's prediction of one grid scene against the reference.
+#[derive(Debug, Clone)]
+pub struct Row {
+    /// The scene's name.
+    pub scene: String,
+    /// Its family.
+    pub family: &'static str,
+    /// The tier, as the core reports it.
+    pub tier: String,
+    /// The reference's bounce time (end, else last above the threshold); `None` if endless.
+    pub truth: Option<f64>,
+    /// The core's.
+    pub predicted: Option<f64>,
+    /// |predicted - truth| / truth (0 when both are 0, infinite when only truth is 0).
+    pub error: f64,
+    /// The core's expected error, if it states one.
+    pub expected: Option<f64>,
+    /// The reference's regime and the core's agree (endless is endless).
+    pub regime_agrees: bool,
+}
+
+/// The tiers checked, as methods.
+#[must_use]
+pub fn methods() -> [contact_bounce::Method<f64>; 6] {
+    use contact_bounce::{Method, Nodes};
+    [
+        Method::Closed,
+        Method::Averaged(Nodes::N2),
+        Method::Averaged(Nodes::N4),
+        Method::Averaged(Nodes::N8),
+        Method::Averaged(Nodes::N16),
+        Method::Map {
+            max_impacts: 10_000_000,
+        },
+    ]
+}
+
+/// Every tier on one scene against the reference.
+///
+/// # Errors
+/// When the core refuses the scene or the reference fails, as a message.
+pub fn compare(scene: &GridScene) -> Result<Vec<Row>, String> {
+    use crate::reference::{simulate, Regime as R, DEFAULT_BUDGET};
+    use contact_bounce::Regime;
+    let core = scene
+        .core()
+        .map_err(|e| format!("{}: core: {e}", scene.name))?;
+    let outcome = simulate(&scene.reference, DEFAULT_BUDGET)
+        .map_err(|e| format!("{}: reference: {e}", scene.name))?;
+    let truth = outcome.end_time.or(outcome.last_above_time);
+    let regime_agrees = matches!(
+        (outcome.regime, core.regime()),
+        (R::ZenoAccumulation, Regime::ZenoAccumulation)
+            | (R::LastImpact, Regime::LastImpact)
+            | (R::Endless, Regime::Endless)
+            | (R::Periodic, Regime::Periodic)
+            | (R::SingleImpact, Regime::SingleImpact)
+    );
+    Ok(methods()
+        .into_iter()
+        .map(|method| {
+            let p = core.predict(method);
+            let predicted = p.bounce_time();
+            let error = match (truth, predicted) {
+                (Some(0.0), Some(0.0)) | (None, None) => 0.0,
+                (Some(t), Some(c)) if t > 0.0 => (c - t).abs() / t,
+                _ => f64::INFINITY,
+            };
+            Row {
+                scene: scene.name.clone(),
+                family: scene.family,
+                tier: format!("{:?}", p.tier),
+                truth,
+                predicted,
+                error,
+                expected: p.expected_error,
+                regime_agrees,
+            }
+        })
+        .collect())
+}
+
+/// Scenes off the grid (deterministic pseudo-random, between and around the grid's points):
+/// a check that the expected errors were not fitted to the grid alone.
+#[must_use]
+pub fn off_grid(count: usize, seed: u64) -> Vec<GridScene> {
+    let mut state = seed.max(1);
+    let mut next = move || {
+        // xorshift64*
+        state ^= state >> 12;
+        state ^= state << 25;
+        state ^= state >> 27;
+        #[allow(clippy::cast_precision_loss)]
+        let unit = (state.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 / (1u64 << 53) as f64;
+        unit
+    };
+    let log_uniform = |u: f64, lo: f64, hi: f64| (lo.ln() + u * (hi.ln() - lo.ln())).exp();
+    let mut out = Vec::with_capacity(count);
+    for i in 0..count {
+        let r = 0.05 + 0.945 * next();
+        let zeta = if next() < 0.2 {
+            0.0
+        } else {
+            log_uniform(next(), 1e-3, 0.3)
+        };
+        let j0 = log_uniform(next(), 0.05, 20.0);
+        let s = match i % 5 {
+            0 | 1 => scene("off-grid preload", -1e-3, r, zeta, j0, None),
+            2 => scene(
+                "off-grid gap",
+                1e-3,
+                r,
+                zeta.max(1e-3),
+                j0.max(0.5) * 2.0,
+                None,
+            ),
+            3 => scene(
+                "off-grid gap-undamped",
+                1e-3,
+                r,
+                0.0,
+                j0,
+                Some(log_uniform(next(), 1e-4, 1e-2)),
+            ),
+            _ => scene(
+                "off-grid grazing",
+                0.0,
+                r,
+                zeta.min(0.1),
+                1.0,
+                Some(log_uniform(next(), 1e-4, 1e-2)),
+            ),
+        };
+        out.push(s);
+    }
+    out
+}

@@ -1,0 +1,391 @@
+//! The exact reference (std, f64): event-driven simulation that the core is checked against.
+//!
+//! Definitions every output uses (P_n = (1 + R) v_n is impact n's impulse per unit reduced
+//! mass, impact 0 at t = 0; P_end the threshold impulse):
+//! - `impacts_above`: impacts with P >= P_end, impact 0 included (`None`: infinitely many);
+//! - `last_above_time`: time of the last impact with P >= P_end (`None`: never ends);
+//! - `end_time`: the last impact when impacts stop (gap with damping, single impact), the
+//!   accumulation time of a Zeno preload; `None` when endless;
+//! - `impacts_total`: the total when finite, `None` when infinite (Zeno or endless).
+
+pub mod brent;
+pub mod one_body;
+
+use one_body::{Oscillator, ZENO_TAIL};
+
+/// One body against a stop (physics.md sec. 1), f64, SI units.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OneBody {
+    /// Omega (rad/s).
+    pub omega: f64,
+    /// Delta (m): gap > 0, preload < 0.
+    pub delta: f64,
+    /// R.
+    pub restitution: f64,
+    /// zeta.
+    pub zeta: f64,
+    /// v0 (m/s).
+    pub closing_speed: f64,
+    /// P_end (m/s), if any.
+    pub threshold: Option<f64>,
+}
+
+/// How the bounce ends (physics.md sec. 4).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Regime {
+    /// Preload, R < 1.
+    ZenoAccumulation,
+    /// Finitely many impacts.
+    LastImpact,
+    /// Decays without end.
+    Endless,
+    /// No loss at all.
+    Periodic,
+    /// Overdamped with Delta >= 0.
+    SingleImpact,
+}
+
+/// What a simulation found.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Outcome {
+    /// The regime.
+    pub regime: Regime,
+    /// See the module docs.
+    pub end_time: Option<f64>,
+    /// See the module docs.
+    pub impacts_total: Option<u64>,
+    /// See the module docs.
+    pub last_above_time: Option<f64>,
+    /// See the module docs.
+    pub impacts_above: Option<u64>,
+    /// The first impacts (up to 5), as (time, impulse P).
+    pub first_impacts: Vec<(f64, f64)>,
+}
+
+/// Why a simulation could not answer.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Failure {
+    /// The bounce never ends by itself, and no threshold was given.
+    NeedsThreshold,
+    /// More impacts than the budget allows.
+    Budget(u64),
+    /// A parameter is outside the model (named).
+    Invalid(&'static str),
+}
+
+impl std::fmt::Display for Failure {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::NeedsThreshold => {
+                f.write_str("the bounce never ends by itself: a threshold is required")
+            }
+            Self::Budget(n) => write!(
+                f,
+                "more than {n} impacts: raise the budget or the threshold"
+            ),
+            Self::Invalid(p) => write!(f, "{p} is invalid"),
+        }
+    }
+}
+
+impl std::error::Error for Failure {}
+
+/// Neumaier's compensated sum.
+#[derive(Debug, Clone, Copy, Default)]
+struct Sum {
+    sum: f64,
+    carry: f64,
+}
+
+impl Sum {
+    fn add(&mut self, x: f64) {
+        let t = self.sum + x;
+        if self.sum.abs() >= x.abs() {
+            self.carry += (self.sum - t) + x;
+        } else {
+            self.carry += (x - t) + self.sum;
+        }
+        self.sum = t;
+    }
+    fn value(self) -> f64 {
+        self.sum + self.carry
+    }
+}
+
+/// Impacts a simulation may make before it gives up.
+pub const DEFAULT_BUDGET: u64 = 50_000_000;
+
+/// Simulates one body exactly (see [`one_body`]).
+///
+/// # Errors
+/// [`Failure::Invalid`] for parameters outside the model, [`Failure::NeedsThreshold`] for an
+/// endless regime without a threshold, [`Failure::Budget`] past `budget` impacts.
+#[allow(clippy::too_many_lines)]
+pub fn simulate(scene: &OneBody, budget: u64) -> Result<Outcome, Failure> {
+    let OneBody {
+        omega,
+        delta,
+        restitution,
+        zeta,
+        closing_speed,
+        threshold,
+    } = *scene;
+    let positive = |x: f64| x.is_finite() && x > 0.0;
+    if !positive(omega) {
+        return Err(Failure::Invalid("omega"));
+    }
+    if !delta.is_finite() {
+        return Err(Failure::Invalid("gap"));
+    }
+    if !(restitution > 0.0 && restitution <= 1.0) {
+        return Err(Failure::Invalid("restitution"));
+    }
+    if !(zeta.is_finite() && zeta >= 0.0) {
+        return Err(Failure::Invalid("damping_ratio"));
+    }
+    if !positive(closing_speed) {
+        return Err(Failure::Invalid("closing_speed"));
+    }
+    if threshold.is_some_and(|p| !positive(p)) {
+        return Err(Failure::Invalid("threshold"));
+    }
+    let regime = if delta >= 0.0 && zeta >= 1.0 {
+        Regime::SingleImpact
+    } else if restitution == 1.0 && zeta == 0.0 {
+        Regime::Periodic
+    } else if delta < 0.0 && restitution < 1.0 {
+        Regime::ZenoAccumulation
+    } else if delta > 0.0 && zeta > 0.0 {
+        Regime::LastImpact
+    } else {
+        Regime::Endless
+    };
+    if regime == Regime::Endless && threshold.is_none() {
+        return Err(Failure::NeedsThreshold);
+    }
+    let osc = Oscillator { omega, zeta, delta };
+    let impulse = |v: f64| (1.0 + restitution) * v;
+    let above = |p: f64| threshold.is_none_or(|end| p >= end);
+    let mut first = vec![(0.0, impulse(closing_speed))];
+    let mut time = Sum::default();
+    let mut speed = closing_speed;
+    let mut impacts: u64 = 1;
+    let mut last_above = 0.0;
+    let mut count_above: u64 = 1;
+    let mut still_above = true;
+    let scale = omega * delta.abs();
+
+    if regime == Regime::Periodic {
+        // Every flight equals the first: record a few, and report the endless answer.
+        let (flight, _) = osc
+            .leave(restitution * speed)
+            .land()
+            .ok_or(Failure::Invalid("gap"))?;
+        for k in 1..5_u32 {
+            first.push((f64::from(k) * flight, impulse(speed)));
+        }
+        let all_above = above(impulse(speed));
+        return Ok(Outcome {
+            regime,
+            end_time: None,
+            impacts_total: None,
+            last_above_time: if all_above { None } else { Some(0.0) },
+            impacts_above: if all_above { None } else { Some(1) },
+            first_impacts: first,
+        });
+    }
+
+    let (end_time, impacts_total) = loop {
+        if impacts > budget {
+            return Err(Failure::Budget(budget));
+        }
+        let departure = restitution * speed;
+        let flight = osc.leave(departure);
+        if regime == Regime::ZenoAccumulation && departure < ZENO_TAIL * scale {
+            // Geometric tail: departures a q^k, flights t_f q^k.
+            let (t_f, returned) = flight.land().ok_or(Failure::Invalid("gap"))?;
+            let q = restitution * returned / departure;
+            let start = time.value();
+            if still_above {
+                if let Some(end) = threshold {
+                    let p_next = impulse(returned);
+                    if p_next >= end {
+                        let more = ((p_next / end).ln() / -q.ln()).floor() + 1.0;
+                        last_above = start + t_f * (1.0 - q.powf(more)) / (1.0 - q);
+                        #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+                        let extra = more as u64;
+                        count_above += extra;
+                    }
+                }
+            }
+            break (Some(start + t_f / (1.0 - q)), None);
+        }
+        match flight.land() {
+            None => break (Some(time.value()), Some(impacts)),
+            Some((t_f, returned)) => {
+                time.add(t_f);
+                speed = returned;
+                impacts += 1;
+                let p = impulse(speed);
+                if first.len() < 5 {
+                    first.push((time.value(), p));
+                }
+                if still_above {
+                    if above(p) {
+                        last_above = time.value();
+                        count_above = impacts;
+                    } else {
+                        still_above = false;
+                        if regime == Regime::Endless {
+                            break (None, None);
+                        }
+                    }
+                }
+            }
+        }
+    };
+    let (last_above_time, impacts_above) = match threshold {
+        Some(_) => (Some(last_above), Some(count_above)),
+        None => (end_time, impacts_total),
+    };
+    Ok(Outcome {
+        regime,
+        end_time,
+        impacts_total,
+        last_above_time,
+        impacts_above,
+        first_impacts: first,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn preload(r: f64, zeta: f64, v0: f64) -> OneBody {
+        OneBody {
+            omega: 1000.0,
+            delta: -1e-3,
+            restitution: r,
+            zeta,
+            closing_speed: v0,
+            threshold: None,
+        }
+    }
+
+    #[test]
+    fn light_damping_tends_to_the_undamped_flight() {
+        // zeta = 1e-9 goes through the root finder: its flights differ from the undamped closed
+        // form by O(zeta). (In the gap the body must clear the stop by more than the damping
+        // takes: Delta j^2 / 8 > pi zeta Delta, so j >= 1e-2 here.)
+        for delta in [-1e-3, 0.0, 1e-3] {
+            for a in [1e-2, 0.3, 1.0, 50.0] {
+                let osc = Oscillator {
+                    omega: 1000.0,
+                    zeta: 1e-9,
+                    delta,
+                };
+                let (t, v) = osc.leave(a).land().unwrap();
+                let exact = 2.0 / 1000.0 * a.atan2(-1000.0 * delta);
+                // Near grazing the return's kinetic energy is the clearance Delta j^2 / 8 less
+                // the ~2 pi zeta Delta that damping takes: sensitivity O(zeta / j^2),
+                // j = a / (Omega |Delta|).
+                let j = a / (1000.0 * delta.abs()).max(1e-300);
+                let bound = 1e-8 + 10.0 * 1e-9 / (j * j).min(1.0);
+                assert!(
+                    (t / exact - 1.0).abs() < bound,
+                    "{delta} {a}: {t} vs {exact}"
+                );
+                assert!((v / a - 1.0).abs() < bound, "{delta} {a}: {v}");
+            }
+        }
+    }
+
+    #[test]
+    fn energy_lost_in_flight_is_the_viscous_integral() {
+        for (delta, zeta, a) in [
+            (-1e-3, 0.05, 1.0),
+            (-1e-3, 0.3, 1e-3),
+            (1e-3, 0.01, 2.0),
+            (0.0, 0.2, 0.5),
+            (-1e-3, 1.5, 0.2),
+            (-1e-3, 1.0, 0.2),
+        ] {
+            let osc = Oscillator {
+                omega: 1000.0,
+                zeta,
+                delta,
+            };
+            let (t, v) = osc.leave(a).land().unwrap();
+            let lost = (a * a - v * v) / 2.0;
+            let integral = osc.viscous_loss(a, t);
+            assert!(
+                (lost / integral - 1.0).abs() < 1e-9,
+                "{delta} {zeta} {a}: {lost} vs {integral}"
+            );
+        }
+    }
+
+    #[test]
+    fn tiny_zeno_flights_keep_their_digits() {
+        // a = 1e-9 Omega |Delta|: flight ~ 2a / (Omega^2 |Delta|) (1 + O(a)); the series form
+        // keeps it to rounding where the closed form would lose ~9 digits.
+        let osc = Oscillator {
+            omega: 1000.0,
+            zeta: 0.3,
+            delta: -1e-3,
+        };
+        let a = 1e-9;
+        let (t, v) = osc.leave(a).land().unwrap();
+        let ball = 2.0 * a / (1000.0 * 1000.0 * 1e-3);
+        assert!((t / ball - 1.0).abs() < 1e-8, "{t} vs {ball}");
+        assert!((v / a - 1.0).abs() < 1e-8);
+    }
+
+    #[test]
+    fn zeno_accumulation_matches_the_exact_undamped_sum() {
+        let s = preload(0.8, 0.0, 0.3);
+        let out = simulate(&s, DEFAULT_BUDGET).unwrap();
+        // sum_{n>=0} (2/Omega) atan(R^{n+1} v0 / (Omega |Delta|)), brute force.
+        let mut exact = 0.0;
+        let mut y: f64 = 0.8 * 0.3;
+        while y > 1e-30 {
+            exact += 2.0 / 1000.0 * y.atan();
+            y *= 0.8;
+        }
+        assert_eq!(out.regime, Regime::ZenoAccumulation);
+        assert!((out.end_time.unwrap() / exact - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_gap_with_damping_ends_and_overdamped_is_single() {
+        // j = R v0 / (Omega Delta) = 4.5: the amplitude outlasts several decays.
+        let gap = OneBody {
+            delta: 1e-3,
+            ..preload(0.9, 0.05, 5.0)
+        };
+        let out = simulate(&gap, DEFAULT_BUDGET).unwrap();
+        assert_eq!(out.regime, Regime::LastImpact);
+        assert!(out.impacts_total.unwrap() > 1 && out.end_time.unwrap() > 0.0);
+        let single = OneBody { zeta: 1.2, ..gap };
+        let out = simulate(&single, DEFAULT_BUDGET).unwrap();
+        assert_eq!(
+            (out.regime, out.end_time, out.impacts_total),
+            (Regime::SingleImpact, Some(0.0), Some(1))
+        );
+        // Endless needs a threshold.
+        let endless = OneBody { zeta: 0.0, ..gap };
+        assert_eq!(
+            simulate(&endless, DEFAULT_BUDGET),
+            Err(Failure::NeedsThreshold)
+        );
+        assert!(simulate(
+            &OneBody {
+                threshold: Some(0.01),
+                ..endless
+            },
+            DEFAULT_BUDGET
+        )
+        .is_ok());
+    }
+}
