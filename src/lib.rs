@@ -42,7 +42,7 @@ pub use averaged::{Averaged, Bodies, EnvelopePoint, Motion};
 pub use closed::Estimate;
 pub use error::{Error, Parameter, Reason};
 pub use float::Float;
-pub use map::DEFAULT_MAX_IMPACTS;
+pub use map::{Impact, MapEnd, MapImpacts, DEFAULT_MAX_IMPACTS};
 pub use mechanisms::{
     restitution_rate, AnyDissipation, Asymptote, Dissipation, HarmonicSum, Hereditary, Undamped,
     Viscous,

@@ -8,7 +8,8 @@
 //!
 //! Iterations are bounded: a preload's Zeno tail is summed on the small-impulse asymptote once
 //! J < [`Float::TAIL_CUTOFF`] Omega |Delta|; past `max_impacts` the averaged model finishes
-//! the sum (flagged [`Approximations::MAP_CONTINUED_AVERAGED`]).
+//! the sum (flagged [`Approximations::MAP_CONTINUED_AVERAGED`]). [`MapImpacts`] yields the
+//! impacts themselves.
 
 use crate::averaged::Averaged;
 use crate::closed::{asymptotic_count, asymptotic_time, by_regime};
@@ -21,9 +22,138 @@ use crate::{accuracy, Float, Scene};
 /// The map's default cap on iterated impacts.
 pub const DEFAULT_MAX_IMPACTS: u32 = 100_000;
 
-/// Where the iteration stopped and what remains to be summed.
+/// One impact of the map: its index (impact 0 at t = 0), time (s) and impulse per unit
+/// reduced mass P = (1 + R) v (m/s).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Impact<F> {
+    /// 0 for the first impact.
+    pub index: u32,
+    /// Time after impact 0 (s).
+    pub time: F,
+    /// P = (1 + R) v (m/s).
+    pub impulse: F,
+}
+
+/// Why the map's impacts stopped.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum MapEnd<F> {
+    /// The flight after the last impact does not return: the bounce ended at it.
+    NoReturn,
+    /// A preload's flight loses all its impulse to damping (first order): the contact closes
+    /// after this flight time (s).
+    Closes(F),
+    /// A preload's departure fell below [`Float::TAIL_CUTOFF`] Omega |Delta|: the rest is a
+    /// Zeno tail, from this generating impulse (m/s).
+    ZenoTail(F),
+    /// The cap on impacts was reached, with this generating impulse left (m/s).
+    Capped(F),
+}
+
+/// The map's impacts, one by one, allocation-free: impact 0, then each return until the map
+/// stops ([`MapImpacts::end`] says why). Also a bounce trace generator for firmware tests.
+///
+/// ```
+/// use contact_bounce::{catalogue, MapImpacts};
+/// let dome = catalogue::TACTILE_DOME.scene::<f32>()?;
+/// let first: Vec<_> = MapImpacts::new(&dome, 100).take(3).collect();
+/// assert_eq!(first[0].time, 0.0);
+/// assert!(first[1].time > 0.0 && first[1].impulse < first[0].impulse);
+/// # Ok::<(), contact_bounce::Error>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct MapImpacts<'a, F, D> {
+    scene: &'a Scene<F, D>,
+    speed: F,
+    time: Compensated<F>,
+    index: u32,
+    started: bool,
+    max_impacts: u32,
+    end: Option<MapEnd<F>>,
+}
+
+impl<'a, F: Float, D: Dissipation<F>> MapImpacts<'a, F, D> {
+    /// The impacts of `scene`, at most `max_impacts` + 1 of them.
+    #[must_use]
+    pub fn new(scene: &'a Scene<F, D>, max_impacts: u32) -> Self {
+        Self {
+            scene,
+            speed: scene.closing_speed(),
+            time: Compensated::new(),
+            index: 0,
+            started: false,
+            max_impacts,
+            end: None,
+        }
+    }
+
+    /// Why the impacts stopped, once they have (`None` while they go on).
+    #[must_use]
+    pub const fn end(&self) -> Option<MapEnd<F>> {
+        self.end
+    }
+}
+
+impl<F: Float, D: Dissipation<F>> Iterator for MapImpacts<'_, F, D> {
+    type Item = Impact<F>;
+
+    fn next(&mut self) -> Option<Impact<F>> {
+        let scene = self.scene;
+        let restitution = scene.restitution();
+        if !self.started {
+            self.started = true;
+            return Some(Impact {
+                index: 0,
+                time: F::ZERO,
+                impulse: scene.first_impulse(),
+            });
+        }
+        if self.end.is_some() {
+            return None;
+        }
+        let j = F::TWO * restitution * self.speed;
+        let preload = scene.delta() < F::ZERO;
+        let stop = if scene.regime() == Regime::SingleImpact {
+            Some(MapEnd::NoReturn)
+        } else if preload && j <= F::TAIL_CUTOFF * scene.omega() * scene.delta().abs() {
+            Some(MapEnd::ZenoTail(j))
+        } else if self.index >= self.max_impacts {
+            Some(MapEnd::Capped(j))
+        } else {
+            None
+        };
+        if stop.is_some() {
+            self.end = stop;
+            return None;
+        }
+        let point = scene.orbit().at(j);
+        let period = point.period();
+        let returning = j + scene.dissipation().rate(&point) * period;
+        if returning <= F::ZERO {
+            // The first-order loss exceeds the flight's impulse (heavy damping): in a gap the
+            // last impact was the last; a preload always returns, with a vanishing impulse.
+            self.end = Some(if preload {
+                MapEnd::Closes(period)
+            } else {
+                MapEnd::NoReturn
+            });
+            return None;
+        }
+        self.time.add(period);
+        self.speed = returning * F::HALF;
+        self.index = self.index.saturating_add(1);
+        Some(Impact {
+            index: self.index,
+            time: self.time.value(),
+            impulse: (F::ONE + restitution) * self.speed,
+        })
+    }
+}
+
+/// Where the prediction's iteration stopped and what remains to be summed.
 enum Stop<F> {
-    /// The bounce ended at this impact (time, impacts so far).
+    /// The bounce ended at this time, after this many impacts.
     Ended(F, F),
     /// Below the threshold in an endless regime: nothing more to sum.
     BelowThreshold,
@@ -41,70 +171,54 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
         return p;
     }
     let orbit = scene.orbit();
-    let restitution = scene.restitution();
     let threshold = scene.threshold_impulse();
-    let preload = scene.delta() < F::ZERO;
-    let tail = F::TAIL_CUTOFF * scene.omega() * scene.delta().abs();
     let endless = scene.regime() == Regime::Endless;
-
-    let mut speed = scene.closing_speed();
-    let mut time = Compensated::new();
-    let mut impacts: u32 = 1;
     let mut last_above = F::ZERO;
     let mut above = F::ONE;
     let mut still_above = true;
-
-    let stop = loop {
-        let j = F::TWO * restitution * speed;
-        if preload && j <= tail {
-            break Stop::Rest {
-                j,
-                t: time.value(),
-                n: F::from_u32(impacts),
-                averaged: false,
-            };
+    let mut latest = Impact {
+        index: 0,
+        time: F::ZERO,
+        impulse: scene.first_impulse(),
+    };
+    let mut impacts = MapImpacts::new(scene, max_impacts);
+    let mut below_in_endless = false;
+    for impact in impacts.by_ref().skip(1) {
+        latest = impact;
+        if !still_above {
+            continue;
         }
-        if impacts > max_impacts {
-            break Stop::Rest {
-                j,
-                t: time.value(),
-                n: F::from_u32(impacts),
-                averaged: true,
-            };
-        }
-        let point = orbit.at(j);
-        let period = point.period();
-        let returning = j + scene.dissipation().rate(&point) * period;
-        if returning <= F::ZERO {
-            // The first-order loss exceeds the flight's impulse (heavy damping). In a gap the
-            // impact just made was the last; a preload always returns, with a vanishing
-            // impulse: the bounce ends after this flight, or, in an endless regime, the next
-            // impact is below any threshold.
+        if threshold.is_some_and(|p_end| impact.impulse < p_end) {
+            still_above = false;
             if endless {
-                break Stop::BelowThreshold;
+                below_in_endless = true;
+                break;
             }
-            let end = if preload {
-                time.value() + period
-            } else {
-                time.value()
-            };
-            break Stop::Ended(end, F::from_u32(impacts));
+        } else {
+            last_above = impact.time;
+            above = F::from_u32(impact.index) + F::ONE;
         }
-        time.add(period);
-        impacts = impacts.saturating_add(1);
-        speed = returning * F::HALF;
-        if still_above {
-            let impulse = (F::ONE + restitution) * speed;
-            if threshold.is_some_and(|p_end| impulse < p_end) {
-                still_above = false;
-                if endless {
-                    break Stop::BelowThreshold;
-                }
-            } else {
-                last_above = time.value();
-                above = F::from_u32(impacts);
-            }
-        }
+    }
+    let count = F::from_u32(latest.index) + F::ONE;
+    let stop = match impacts.end() {
+        // An endless regime never ends: where the first-order loss says it does, the next
+        // impact is below any threshold.
+        _ if below_in_endless => Stop::BelowThreshold,
+        Some(MapEnd::NoReturn | MapEnd::Closes(_)) if endless => Stop::BelowThreshold,
+        Some(MapEnd::NoReturn) | None => Stop::Ended(latest.time, count),
+        Some(MapEnd::Closes(flight)) => Stop::Ended(latest.time + flight, count),
+        Some(MapEnd::ZenoTail(j)) => Stop::Rest {
+            j,
+            t: latest.time,
+            n: count,
+            averaged: false,
+        },
+        Some(MapEnd::Capped(j)) => Stop::Rest {
+            j,
+            t: latest.time,
+            n: count,
+            averaged: true,
+        },
     };
 
     let mut approximations = accuracy::reduction_flags(scene);
@@ -115,21 +229,24 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
             if averaged {
                 approximations = approximations.with(Approximations::MAP_CONTINUED_AVERAGED);
             }
+            // The rest: by the averaged model past the cap, on the asymptote in a Zeno tail.
             let averaged_model = Averaged::new(scene, Nodes::N8);
+            let rest = |low: F| {
+                if averaged {
+                    let (dt, dn, _) = averaged_model.fall(j, low);
+                    (dt, dn)
+                } else {
+                    let a = scene.asymptote();
+                    (
+                        asymptotic_time(a, j, low),
+                        asymptotic_count(a, orbit, j, low),
+                    )
+                }
+            };
             // The rest of the threshold count, if the threshold was not crossed yet.
             if still_above {
                 if let Some(j_end) = scene.threshold_generating() {
-                    let (dt, dn, _) = if averaged {
-                        averaged_model.fall(j, j_end)
-                    } else {
-                        let a = scene.asymptote();
-                        (
-                            asymptotic_time(a, j, j_end),
-                            asymptotic_count(a, orbit, j, j_end),
-                            false,
-                        )
-                    };
-                    if let (Time::At(dt), Count::Finite(dn)) = (dt, dn) {
+                    if let (Time::At(dt), Count::Finite(dn)) = rest(j_end) {
                         last_above = t + dt;
                         above = n + dn;
                     }
@@ -138,16 +255,7 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
             if endless {
                 (Time::Never, Count::Infinite)
             } else {
-                let (dt, dn, _) = if averaged {
-                    averaged_model.fall(j, F::ZERO)
-                } else {
-                    let a = scene.asymptote();
-                    (
-                        asymptotic_time(a, j, F::ZERO),
-                        asymptotic_count(a, orbit, j, F::ZERO),
-                        false,
-                    )
-                };
+                let (dt, dn) = rest(F::ZERO);
                 (
                     dt.seconds().map_or(Time::Never, |dt| Time::At(t + dt)),
                     dn.value()
