@@ -51,6 +51,17 @@ step "generated tables are current"
 python3 scripts/gauss_legendre.py | rustfmt --edition 2021 | diff - src/quadrature/table.rs
 python3 scripts/averaged_error_table.py | rustfmt --edition 2021 | diff - src/accuracy/zeno_table.rs
 
+step "measured tables are current (docs/ and README regenerate identically)"
+cargo run --quiet --release -p host-tests --bin error-table | diff - docs/error-table.md
+table=$(scripts/eval-catalogue.sh)
+python3 - "$table" <<'PY'
+import sys
+table = sys.argv[1].strip()
+for path in ("README.md", "docs/eval-catalogue.md"):
+    if table not in open(path).read():
+        sys.exit(f"{path}: the eval table differs from scripts/eval-catalogue.sh's output")
+PY
+
 step "main job runs"
 cargo run --quiet --release -p bounce-table > /dev/null
 

@@ -1,7 +1,13 @@
 //! `bounce-table`: predicted bounce and debounce windows for the typical switches of
-//! physics.md sec. 7 (the built-in catalogue), with every tier of the model side by side.
+//! physics.md sec. 7 (the built-in catalogue), with every tier of the model side by side; and
+//! `bounce-table eval`, the JSON Lines interface to the model and the exact reference.
 //!
-//! Usage: `bounce-table [--sample-period SECONDS]` (default 1e-4 s).
+//! Usage: `bounce-table [--sample-period SECONDS]` (default 1e-4 s), or
+//! `bounce-table eval [--method exact|map|averaged|closed|auto] [--tolerance X]
+//! [--precision f32|f64] [--nodes N] < scenes.jsonl`.
+
+mod eval;
+mod scene_input;
 
 use std::process::ExitCode;
 
@@ -11,6 +17,8 @@ use contact_bounce::{
 
 fn usage() -> &'static str {
     "usage: bounce-table [--sample-period SECONDS]\n\
+     \x20      bounce-table eval [--method exact|map|averaged|closed|auto] [--tolerance X]\n\
+     \x20                        [--precision f32|f64] [--nodes N] < scenes.jsonl\n\
      Prints predicted bounce times and debounce windows for the built-in catalogue of typical\n\
      switches (physics.md sec. 7). The parameters are typical values, not a datasheet."
 }
@@ -54,6 +62,24 @@ fn error(p: &Prediction<f64>) -> String {
 }
 
 fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    if args.first().is_some_and(|a| a == "eval") {
+        let options = match eval::options(args.get(1..).unwrap_or_default()) {
+            Ok(o) => o,
+            Err(message) => {
+                eprintln!("bounce-table: {message}\n{}", usage());
+                return ExitCode::from(2);
+            }
+        };
+        return match eval::run(&options) {
+            Ok(true) => ExitCode::SUCCESS,
+            Ok(false) => ExitCode::FAILURE,
+            Err(e) => {
+                eprintln!("bounce-table eval: {e}");
+                ExitCode::FAILURE
+            }
+        };
+    }
     let period = match parse_args() {
         Ok(p) => p,
         Err(message) => {

@@ -1,0 +1,323 @@
+//! `bounce-table eval`: JSON Lines scenes on stdin, one JSON result per line on stdout.
+//!
+//! Options: `--method exact|map|averaged|closed|auto` (default auto), `--tolerance X` (for
+//! auto, default 0.01), `--precision f32|f64` (core tiers, default f64), `--nodes N` (averaged,
+//! default 8). A bad line gets an error object naming the line and the field; the other lines
+//! still run, and the exit status is 1 if any line failed.
+
+use std::io::{BufRead, Write};
+
+use contact_bounce::{
+    Count, Dissipation, Float, MapImpacts, Method as CoreMethod, Nodes, Prediction, Regime, Time,
+    Tolerance, DEFAULT_MAX_IMPACTS,
+};
+use host_tests::reference::{self, OneBody};
+use serde_json::{json, Value};
+
+use crate::scene_input::{FieldError, SceneInput, Spring};
+
+/// The tier asked for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Method {
+    /// The exact reference (host only).
+    Exact,
+    /// The semi-discrete map.
+    Map,
+    /// The averaged model.
+    Averaged,
+    /// Closed forms.
+    Closed,
+    /// The cheapest tier meeting the tolerance.
+    Auto,
+}
+
+impl Method {
+    fn name(self) -> &'static str {
+        match self {
+            Self::Exact => "exact",
+            Self::Map => "map",
+            Self::Averaged => "averaged",
+            Self::Closed => "closed",
+            Self::Auto => "auto",
+        }
+    }
+}
+
+/// Parsed options.
+#[derive(Debug, Clone, Copy)]
+pub struct Options {
+    /// Tier.
+    pub method: Method,
+    /// Relative tolerance for auto.
+    pub tolerance: f64,
+    /// True for f32.
+    pub single: bool,
+    /// Averaged tier nodes.
+    pub nodes: Nodes,
+}
+
+/// Parses `eval`'s options.
+///
+/// # Errors
+/// A message naming the bad option.
+pub fn options(args: &[String]) -> Result<Options, String> {
+    let mut out = Options {
+        method: Method::Auto,
+        tolerance: 0.01,
+        single: false,
+        nodes: Nodes::N8,
+    };
+    let mut it = args.iter();
+    while let Some(arg) = it.next() {
+        let mut value = |name: &str| it.next().cloned().ok_or(format!("{name} needs a value"));
+        match arg.as_str() {
+            "--method" => {
+                out.method = match value("--method")?.as_str() {
+                    "exact" => Method::Exact,
+                    "map" => Method::Map,
+                    "averaged" => Method::Averaged,
+                    "closed" => Method::Closed,
+                    "auto" => Method::Auto,
+                    other => {
+                        return Err(format!(
+                            "--method: '{other}' is not one of exact, map, averaged, closed, auto"
+                        ))
+                    }
+                }
+            }
+            "--tolerance" => {
+                let v = value("--tolerance")?;
+                out.tolerance = v
+                    .parse::<f64>()
+                    .ok()
+                    .filter(|t| t.is_finite() && *t > 0.0)
+                    .ok_or(format!("--tolerance: '{v}' is not a positive number"))?;
+            }
+            "--precision" => {
+                out.single = match value("--precision")?.as_str() {
+                    "f32" => true,
+                    "f64" => false,
+                    other => return Err(format!("--precision: '{other}' is not f32 or f64")),
+                }
+            }
+            "--nodes" => {
+                let v = value("--nodes")?;
+                out.nodes = v
+                    .parse::<u32>()
+                    .ok()
+                    .and_then(Nodes::from_count)
+                    .ok_or(format!(
+                        "--nodes: '{v}' is not one of 2, 4, 6, 8, 10, 12, 16, 20"
+                    ))?;
+            }
+            other => return Err(format!("eval: unknown option '{other}'")),
+        }
+    }
+    Ok(out)
+}
+
+fn regime_name(r: Regime) -> &'static str {
+    match r {
+        Regime::ZenoAccumulation => "zeno_accumulation",
+        Regime::LastImpact => "last_impact",
+        Regime::Endless => "endless",
+        Regime::Periodic => "periodic",
+        Regime::SingleImpact => "single_impact",
+        _ => "unknown",
+    }
+}
+
+fn time<F: Float>(t: Time<F>) -> Value {
+    t.seconds().map_or(Value::Null, |s| json!(s.to_f64()))
+}
+
+fn count<F: Float>(n: Count<F>, whole: bool) -> Value {
+    match n.value() {
+        None => Value::Null,
+        #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+        Some(v) if whole && v.to_f64() < 9.0e15 => json!(v.to_f64().round() as u64),
+        Some(v) => json!(v.to_f64()),
+    }
+}
+
+fn significant(x: f64, digits: i32) -> f64 {
+    if x == 0.0 || !x.is_finite() {
+        return x;
+    }
+    #[allow(clippy::cast_possible_truncation)]
+    let magnitude = x.abs().log10().floor() as i32;
+    let scale = 10f64.powi(digits - 1 - magnitude);
+    (x * scale).round() / scale
+}
+
+fn core_result<F: Float>(input: &SceneInput, options: &Options) -> Result<Value, FieldError> {
+    let scene = input.core::<F>()?;
+    let method = match options.method {
+        Method::Map => CoreMethod::Map {
+            max_impacts: DEFAULT_MAX_IMPACTS,
+        },
+        Method::Averaged => CoreMethod::Averaged(options.nodes),
+        Method::Closed => CoreMethod::Closed,
+        Method::Auto | Method::Exact => CoreMethod::Auto(
+            Tolerance::new(F::from_f64(options.tolerance)).map_err(FieldError::from)?,
+        ),
+    };
+    let p: Prediction<F> = scene.predict(method);
+    // The averaged tier counts in real numbers; the others in whole impacts.
+    let whole = !matches!(p.tier, contact_bounce::Tier::Averaged(_));
+    let first = if options.method == Method::Map {
+        let impacts: Vec<Value> = MapImpacts::new(&scene, DEFAULT_MAX_IMPACTS)
+            .take(5)
+            .map(|i| json!([i.time.to_f64(), i.impulse.to_f64()]))
+            .collect();
+        Value::Array(impacts)
+    } else {
+        Value::Null
+    };
+    let approximate = p
+        .approximations
+        .contains(contact_bounce::Approximations::TWO_BODY_RAYLEIGH)
+        || p.approximations
+            .contains(contact_bounce::Approximations::OUTSIDE_VALIDITY);
+    let mut out = json!({
+        "name": input.name,
+        "method": options.method.name(),
+        "regime": regime_name(p.regime),
+        "end_time": time(p.end_time),
+        "impacts_total": count(p.impacts_total, whole),
+        "last_above_time": time(p.last_above_time),
+        "impacts_above": count(p.impacts_above, whole),
+        "first_impacts": first,
+        "approximate": approximate,
+        "tier": format!("{:?}", p.tier),
+        // Expected errors are estimates (some stored as f32): four significant digits.
+        "expected_error": p.expected_error.map(|e| significant(e.to_f64(), 4)),
+        "precision": if options.single { "f32" } else { "f64" },
+    });
+    if options.method == Method::Auto {
+        if let (Some(map), Ok(t)) = (
+            out.as_object_mut(),
+            Tolerance::new(F::from_f64(options.tolerance)),
+        ) {
+            map.insert("promised".to_owned(), json!(p.promises(t)));
+        }
+    }
+    Ok(out)
+}
+
+fn exact_result(input: &SceneInput) -> Result<Value, FieldError> {
+    if matches!(input.stiffness, Spring::TwoBody(..)) {
+        return Err(FieldError {
+            field: "two_body".to_owned(),
+            message: "the exact reference does not simulate two bodies yet: use a core method"
+                .to_owned(),
+        });
+    }
+    if input.kernel.is_some() {
+        return Err(FieldError {
+            field: "kernel".to_owned(),
+            message: "the exact reference does not simulate a kernel yet: use a core method"
+                .to_owned(),
+        });
+    }
+    // Validate (and derive Omega, Delta, P_end) exactly as the core does.
+    let scene = input.core::<f64>()?;
+    let one = OneBody {
+        omega: scene.omega(),
+        delta: scene.delta(),
+        restitution: scene.restitution(),
+        zeta: scene.dissipation().damping_ratio(),
+        closing_speed: scene.closing_speed(),
+        threshold: scene.threshold_impulse(),
+    };
+    let out = reference::simulate(&one, reference::DEFAULT_BUDGET).map_err(|e| FieldError {
+        field: String::new(),
+        message: e.to_string(),
+    })?;
+    let regime = match out.regime {
+        reference::Regime::ZenoAccumulation => "zeno_accumulation",
+        reference::Regime::LastImpact => "last_impact",
+        reference::Regime::Endless => "endless",
+        reference::Regime::Periodic => "periodic",
+        reference::Regime::SingleImpact => "single_impact",
+    };
+    Ok(json!({
+        "name": input.name,
+        "method": "exact",
+        "regime": regime,
+        "end_time": out.end_time,
+        "impacts_total": out.impacts_total,
+        "last_above_time": out.last_above_time,
+        "impacts_above": out.impacts_above,
+        "first_impacts": out.first_impacts.iter().map(|(t, p)| json!([t, p])).collect::<Vec<_>>(),
+        "approximate": false,
+    }))
+}
+
+/// Evaluates one line.
+///
+/// # Errors
+/// The field at fault.
+pub fn evaluate(
+    line: &str,
+    number: usize,
+    options: &Options,
+) -> Result<Value, (String, FieldError)> {
+    let default_name = format!("line {number}");
+    let value: Value = serde_json::from_str(line).map_err(|e| {
+        (
+            default_name.clone(),
+            FieldError {
+                field: String::new(),
+                message: format!("not JSON: {e}"),
+            },
+        )
+    })?;
+    let input = SceneInput::from_json(&value, &default_name).map_err(|e| {
+        let name = value
+            .get("name")
+            .and_then(Value::as_str)
+            .unwrap_or(&default_name)
+            .to_owned();
+        (name, e)
+    })?;
+    let result = match (options.method, options.single) {
+        (Method::Exact, _) => exact_result(&input),
+        (_, true) => core_result::<f32>(&input, options),
+        (_, false) => core_result::<f64>(&input, options),
+    };
+    result.map_err(|e| (input.name.clone(), e))
+}
+
+/// Runs `eval` over stdin; returns whether every line succeeded.
+///
+/// # Errors
+/// When stdin or stdout fail.
+pub fn run(options: &Options) -> std::io::Result<bool> {
+    let stdin = std::io::stdin();
+    let stdout = std::io::stdout();
+    let mut out = stdout.lock();
+    let mut all_ok = true;
+    for (index, line) in stdin.lock().lines().enumerate() {
+        let line = line?;
+        if line.trim().is_empty() {
+            continue;
+        }
+        let number = index + 1;
+        let value = match evaluate(&line, number, options) {
+            Ok(v) => v,
+            Err((name, e)) => {
+                all_ok = false;
+                json!({ "line": number, "name": name, "field": e.field, "error": e.message })
+            }
+        };
+        if let Err(e) = writeln!(out, "{value}") {
+            // A reader that stopped early (`| head`) is not a failure of ours.
+            if e.kind() == std::io::ErrorKind::BrokenPipe {
+                return Ok(all_ok);
+            }
+            return Err(e);
+        }
+    }
+    Ok(all_ok)
+}

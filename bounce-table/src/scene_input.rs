@@ -1,0 +1,304 @@
+//! Scenes as JSON objects (the keys of `eval`, SI units), checked field by field.
+
+use contact_bounce::{
+    AnyDissipation, Contact, Frequency, Hereditary, Offset, Restitution, Scene, Threshold, TwoBody,
+    Viscous,
+};
+use serde_json::{Map, Value};
+
+/// A field that is missing, mistyped, unknown or invalid.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FieldError {
+    /// The field, as written in the scene (`two_body.m1` for nested ones); empty for the line.
+    pub field: String,
+    /// What is wrong.
+    pub message: String,
+}
+
+impl FieldError {
+    fn new(field: &str, message: impl Into<String>) -> Self {
+        Self {
+            field: field.to_owned(),
+            message: message.into(),
+        }
+    }
+}
+
+impl From<contact_bounce::Error> for FieldError {
+    fn from(e: contact_bounce::Error) -> Self {
+        Self::new(e.parameter().name(), e.to_string())
+    }
+}
+
+/// Where the natural frequency comes from.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Spring {
+    /// `omega`.
+    Omega(f64),
+    /// `mass` and `stiffness`.
+    MassStiffness(f64, f64),
+    /// `two_body`, with body 2's initial position and velocity.
+    TwoBody(TwoBody<f64>, f64, f64),
+}
+
+/// `gap` or `preload_force`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Placement {
+    /// Delta (m).
+    Gap(f64),
+    /// Preload force (N).
+    PreloadForce(f64),
+}
+
+/// `kernel`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Kernel {
+    /// kappa (1/s^3).
+    pub kappa: f64,
+    /// tau (s).
+    pub tau: f64,
+    /// The initial internal state y (m s), if given.
+    pub state: Option<f64>,
+}
+
+/// One scene, as read.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SceneInput {
+    /// `name`, or "line N".
+    pub name: String,
+    /// Natural frequency.
+    pub stiffness: Spring,
+    /// Gap or preload.
+    pub placement: Placement,
+    /// R.
+    pub restitution: f64,
+    /// zeta (0 when absent; not with `two_body`).
+    pub damping_ratio: f64,
+    /// v0 (m/s).
+    pub closing_speed: f64,
+    /// Threshold.
+    pub threshold: Threshold<f64>,
+    /// Relaxation kernel.
+    pub kernel: Option<Kernel>,
+}
+
+const KEYS: [&str; 13] = [
+    "name",
+    "omega",
+    "mass",
+    "stiffness",
+    "gap",
+    "preload_force",
+    "restitution",
+    "damping_ratio",
+    "closing_speed",
+    "threshold_impulse",
+    "threshold_fraction",
+    "kernel",
+    "two_body",
+];
+
+fn number(object: &Map<String, Value>, key: &str, prefix: &str) -> Result<Option<f64>, FieldError> {
+    match object.get(key) {
+        None | Some(Value::Null) => Ok(None),
+        Some(Value::Number(n)) => n.as_f64().map(Some).ok_or_else(|| {
+            FieldError::new(&format!("{prefix}{key}"), "is not a representable number")
+        }),
+        Some(_) => Err(FieldError::new(
+            &format!("{prefix}{key}"),
+            "must be a number",
+        )),
+    }
+}
+
+fn required(object: &Map<String, Value>, key: &str, prefix: &str) -> Result<f64, FieldError> {
+    number(object, key, prefix)?
+        .ok_or_else(|| FieldError::new(&format!("{prefix}{key}"), "is required"))
+}
+
+fn only_keys(
+    object: &Map<String, Value>,
+    allowed: &[&str],
+    prefix: &str,
+) -> Result<(), FieldError> {
+    match object.keys().find(|k| !allowed.contains(&k.as_str())) {
+        Some(k) => Err(FieldError::new(
+            &format!("{prefix}{k}"),
+            format!(
+                "is not a scene key (expected one of {})",
+                allowed.join(", ")
+            ),
+        )),
+        None => Ok(()),
+    }
+}
+
+fn conflict(a: &str, b: &str) -> FieldError {
+    FieldError::new(b, format!("cannot be given with {a}"))
+}
+
+impl SceneInput {
+    /// Reads a scene from a JSON value.
+    ///
+    /// # Errors
+    /// The first missing, mistyped, unknown or conflicting field.
+    pub fn from_json(value: &Value, default_name: &str) -> Result<Self, FieldError> {
+        let object = value
+            .as_object()
+            .ok_or_else(|| FieldError::new("", "a scene must be a JSON object"))?;
+        only_keys(object, &KEYS, "")?;
+        let name = match object.get("name") {
+            None | Some(Value::Null) => default_name.to_owned(),
+            Some(Value::String(s)) => s.clone(),
+            Some(_) => return Err(FieldError::new("name", "must be a string")),
+        };
+        let has = |k: &str| object.get(k).is_some_and(|v| !v.is_null());
+        let stiffness = if let Some(two) = object.get("two_body").filter(|v| !v.is_null()) {
+            for k in ["omega", "mass", "stiffness", "damping_ratio"] {
+                if has(k) {
+                    return Err(conflict("two_body", k));
+                }
+            }
+            let body = two
+                .as_object()
+                .ok_or_else(|| FieldError::new("two_body", "must be an object"))?;
+            only_keys(
+                body,
+                &["m1", "c1", "d1", "m2", "c2", "d2", "x2", "v2"],
+                "two_body.",
+            )?;
+            let p = "two_body.";
+            Spring::TwoBody(
+                TwoBody {
+                    m1: required(body, "m1", p)?,
+                    c1: required(body, "c1", p)?,
+                    d1: number(body, "d1", p)?.unwrap_or(0.0),
+                    m2: required(body, "m2", p)?,
+                    c2: required(body, "c2", p)?,
+                    d2: number(body, "d2", p)?.unwrap_or(0.0),
+                },
+                number(body, "x2", p)?.unwrap_or(0.0),
+                number(body, "v2", p)?.unwrap_or(0.0),
+            )
+        } else if has("omega") {
+            for k in ["mass", "stiffness"] {
+                if has(k) {
+                    return Err(conflict("omega", k));
+                }
+            }
+            Spring::Omega(required(object, "omega", "")?)
+        } else if has("mass") || has("stiffness") {
+            Spring::MassStiffness(
+                required(object, "mass", "")?,
+                required(object, "stiffness", "")?,
+            )
+        } else {
+            return Err(FieldError::new(
+                "omega",
+                "is required (or mass and stiffness, or two_body)",
+            ));
+        };
+        let placement = match (
+            number(object, "gap", "")?,
+            number(object, "preload_force", "")?,
+        ) {
+            (Some(_), Some(_)) => return Err(conflict("gap", "preload_force")),
+            (Some(gap), None) => Placement::Gap(gap),
+            (None, Some(force)) => Placement::PreloadForce(force),
+            (None, None) => return Err(FieldError::new("gap", "is required (or preload_force)")),
+        };
+        let threshold = match (
+            number(object, "threshold_impulse", "")?,
+            number(object, "threshold_fraction", "")?,
+        ) {
+            (Some(_), Some(_)) => return Err(conflict("threshold_impulse", "threshold_fraction")),
+            (Some(p), None) => Threshold::Impulse(p),
+            (None, Some(f)) => Threshold::FractionOfFirst(f),
+            (None, None) => Threshold::None,
+        };
+        let kernel = match object.get("kernel").filter(|v| !v.is_null()) {
+            None => None,
+            Some(k) => {
+                let k = k
+                    .as_object()
+                    .ok_or_else(|| FieldError::new("kernel", "must be an object"))?;
+                only_keys(k, &["kappa", "tau", "state"], "kernel.")?;
+                Some(Kernel {
+                    kappa: required(k, "kappa", "kernel.")?,
+                    tau: required(k, "tau", "kernel.")?,
+                    state: number(k, "state", "kernel.")?,
+                })
+            }
+        };
+        Ok(Self {
+            name,
+            stiffness,
+            placement,
+            restitution: required(object, "restitution", "")?,
+            damping_ratio: number(object, "damping_ratio", "")?.unwrap_or(0.0),
+            closing_speed: required(object, "closing_speed", "")?,
+            threshold,
+            kernel,
+        })
+    }
+
+    /// The core's scene, in `f64` or `f32` (values rounded to the nearest f32; one out of its
+    /// range is an error naming the field).
+    ///
+    /// # Errors
+    /// The core's validation error, as the field it names.
+    pub fn core<F: contact_bounce::Float>(
+        &self,
+    ) -> Result<Scene<F, AnyDissipation<F>>, FieldError> {
+        let c = F::from_f64;
+        let offset = match self.placement {
+            Placement::Gap(d) => Offset::Delta(c(d)),
+            Placement::PreloadForce(f) => Offset::PreloadForce(c(f)),
+        };
+        let threshold = match self.threshold {
+            Threshold::None => Threshold::None,
+            Threshold::Impulse(p) => Threshold::Impulse(c(p)),
+            Threshold::FractionOfFirst(f) => Threshold::FractionOfFirst(c(f)),
+        };
+        let kernel = self
+            .kernel
+            .map(|k| Hereditary::exponential(c(k.kappa), c(k.tau)))
+            .transpose()?;
+        let restitution = Restitution::Coefficient(c(self.restitution));
+        let v0 = c(self.closing_speed);
+        let scene = match self.stiffness {
+            Spring::TwoBody(b, _, _) => {
+                let bodies = TwoBody {
+                    m1: c(b.m1),
+                    c1: c(b.c1),
+                    d1: c(b.d1),
+                    m2: c(b.m2),
+                    c2: c(b.c2),
+                    d2: c(b.d2),
+                };
+                Scene::two_body(bodies, offset, restitution, v0, threshold, kernel)?
+            }
+            Spring::Omega(_) | Spring::MassStiffness(..) => {
+                let frequency = match self.stiffness {
+                    Spring::MassStiffness(m, k) => Frequency::MassStiffness {
+                        mass: c(m),
+                        stiffness: c(k),
+                    },
+                    Spring::Omega(w) | Spring::TwoBody(_, w, _) => Frequency::Omega(c(w)),
+                };
+                let viscous = Some(Viscous::new(c(self.damping_ratio))?);
+                Scene::new(
+                    Contact {
+                        frequency,
+                        offset,
+                        restitution,
+                        closing_speed: v0,
+                        threshold,
+                    },
+                    (viscous, kernel),
+                )?
+            }
+        };
+        Ok(scene)
+    }
+}

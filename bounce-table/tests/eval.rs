@@ -1,0 +1,156 @@
+//! `bounce-table eval` end to end: the built binary on JSON Lines.
+
+use std::io::Write;
+use std::process::{Command, Stdio};
+
+use serde_json::Value;
+
+fn eval(args: &[&str], input: &str) -> (Vec<Value>, i32) {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_bounce-table"))
+        .arg("eval")
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .spawn()
+        .expect("run bounce-table");
+    child
+        .stdin
+        .take()
+        .expect("stdin")
+        .write_all(input.as_bytes())
+        .expect("write");
+    let out = child.wait_with_output().expect("wait");
+    let lines = String::from_utf8(out.stdout)
+        .expect("utf8")
+        .lines()
+        .map(|l| serde_json::from_str(l).expect("each output line is JSON"))
+        .collect();
+    (lines, out.status.code().unwrap_or(-1))
+}
+
+fn catalogue() -> String {
+    std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenes/catalogue.jsonl"
+    ))
+    .expect("catalogue")
+}
+
+#[test]
+fn every_method_answers_the_catalogue_and_the_tiers_meet_their_expected_error() {
+    let (exact, code) = eval(&["--method", "exact"], &catalogue());
+    assert_eq!((exact.len(), code), (8, 0));
+    for method in ["closed", "averaged", "map", "auto"] {
+        for precision in ["f64", "f32"] {
+            let (rows, code) = eval(
+                &["--method", method, "--precision", precision],
+                &catalogue(),
+            );
+            assert_eq!((rows.len(), code), (8, 0), "{method} {precision}");
+            for (row, truth) in rows.iter().zip(&exact) {
+                assert_eq!(row["name"], truth["name"]);
+                assert_eq!(row["regime"], "zeno_accumulation");
+                let (t, e) = (
+                    row["end_time"].as_f64().unwrap(),
+                    truth["end_time"].as_f64().unwrap(),
+                );
+                if let Some(expected) = row["expected_error"].as_f64() {
+                    // f32 adds its own rounding (the f32 tests bound it by 1e-4).
+                    assert!(
+                        (t / e - 1.0).abs() <= expected + 1e-4,
+                        "{method} {precision} {}: {t} vs {e}",
+                        row["name"]
+                    );
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn exact_and_map_list_their_first_impacts() {
+    for method in ["exact", "map"] {
+        let (rows, _) = eval(&["--method", method], &catalogue());
+        for row in rows {
+            let first = row["first_impacts"].as_array().expect("first_impacts");
+            assert_eq!(first.len(), 5);
+            assert_eq!(first[0][0].as_f64(), Some(0.0));
+            let p: Vec<f64> = first.iter().map(|i| i[1].as_f64().unwrap()).collect();
+            assert!(
+                p.windows(2).all(|w| w[1] < w[0]),
+                "{method}: impulses must fall: {p:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn a_bad_line_names_the_line_and_the_field_and_the_others_still_run() {
+    let input = [
+        r#"{"name": "good", "omega": 1000, "gap": -0.001, "restitution": 0.5, "closing_speed": 0.1}"#,
+        "not json",
+        r#"{"name": "typo", "omega": 1000, "gapp": -0.001, "restitution": 0.5, "closing_speed": 0.1}"#,
+        r#"{"name": "missing", "omega": 1000, "gap": -0.001, "closing_speed": 0.1}"#,
+        r#"{"name": "text", "omega": "fast", "gap": -0.001, "restitution": 0.5, "closing_speed": 0.1}"#,
+        r#"{"name": "negative", "mass": -1, "stiffness": 5, "preload_force": 1, "restitution": 0.5, "closing_speed": 0.1}"#,
+        r#"{"name": "both", "omega": 1000, "gap": 0.001, "preload_force": 1, "restitution": 0.5, "closing_speed": 0.1}"#,
+        r#"{"name": "endless", "omega": 1000, "gap": 0.001, "restitution": 0.5, "closing_speed": 0.1}"#,
+        r#"{"name": "bodies", "two_body": {"m1": 1e-3, "c1": 1e3, "m2": 0, "c2": 1e3}, "gap": -0.001, "restitution": 0.5, "closing_speed": 0.1}"#,
+        "",
+        r#"{"name": "good too", "omega": 1000, "gap": 0.001, "restitution": 0.5, "damping_ratio": 0.01, "closing_speed": 3}"#,
+    ]
+    .join("\n");
+    let (rows, code) = eval(&["--method", "averaged"], &input);
+    assert_eq!(code, 1, "a failed line makes the exit status non-zero");
+    let fields: Vec<(Option<u64>, String)> = rows
+        .iter()
+        .map(|r| {
+            (
+                r["line"].as_u64(),
+                r["field"].as_str().unwrap_or("-").to_owned(),
+            )
+        })
+        .collect();
+    let expected = [
+        (None, "-"),
+        (Some(2), ""),
+        (Some(3), "gapp"),
+        (Some(4), "restitution"),
+        (Some(5), "omega"),
+        (Some(6), "mass"),
+        (Some(7), "preload_force"),
+        (Some(8), "threshold"),
+        (Some(9), "two_body.m2"),
+        (None, "-"),
+    ];
+    let expected: Vec<(Option<u64>, String)> = expected
+        .iter()
+        .map(|(l, f)| (*l, (*f).to_owned()))
+        .collect();
+    assert_eq!(fields, expected);
+    assert_eq!(rows[0]["name"], "good");
+    assert!(rows[0]["end_time"].as_f64().unwrap() > 0.0);
+    assert_eq!(rows[9]["regime"], "last_impact");
+    assert!(rows[8]["error"].as_str().unwrap().contains("m2"));
+}
+
+#[test]
+fn bad_options_are_refused() {
+    for args in [
+        &["--method", "fastest"][..],
+        &["--tolerance", "-1"],
+        &["--precision", "f16"],
+        &["--nodes", "7"],
+        &["--bogus"],
+    ] {
+        let status = Command::new(env!("CARGO_BIN_EXE_bounce-table"))
+            .arg("eval")
+            .args(args)
+            .stdin(Stdio::null())
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .status()
+            .expect("run");
+        assert_eq!(status.code(), Some(2), "{args:?}");
+    }
+}
