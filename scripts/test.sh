@@ -15,6 +15,10 @@ rustup target add "${targets[@]}"
 rustup component add clippy rustfmt llvm-tools
 python3 -c "import mpmath" 2>/dev/null || python3 -m pip install --quiet mpmath
 
+# Property tests explore a fixed seed in CI (reproducible); run them without it locally to
+# explore new cases (failures are kept in host-tests/tests/*.proptest-regressions and replayed).
+export PROPTEST_RNG_SEED="${PROPTEST_RNG_SEED:-20261121}"
+
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
 

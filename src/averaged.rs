@@ -191,6 +191,10 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
     /// within 1 % for j0 <= 1; gap end -4 % to +99 % with few impacts; thresholds ~ r/2).
     #[must_use]
     pub fn predict(&self) -> Prediction<F> {
+        self.predict_unchecked().within_range()
+    }
+
+    fn predict_unchecked(&self) -> Prediction<F> {
         if let Some(p) = by_regime(self.scene) {
             return p;
         }

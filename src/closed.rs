@@ -30,6 +30,20 @@ pub(crate) fn ln1p_ratio<F: Float>(z: F) -> F {
     }
 }
 
+/// s ln(1 + k s) / (k s) for k >= 0, s > 0 (a closed-form fall time): accurate as k s -> 0
+/// (series) and finite when k s overflows (ln(k s) = ln k + ln s).
+pub(crate) fn log_growth<F: Float>(s: F, k: F) -> F {
+    if k <= F::ZERO {
+        return s;
+    }
+    let z = k * s;
+    if z.is_finite() {
+        s * ln1p_ratio(z)
+    } else {
+        (k.ln() + s.ln()) / k
+    }
+}
+
 /// Time for J to fall from `j1` to `j2` (0 <= j2 <= j1) on the asymptote
 /// J' = -(constant + linear J + inverse / J) (at most two terms are non-zero).
 pub(crate) fn asymptotic_time<F: Float>(a: &Asymptote<F>, j1: F, j2: F) -> Time<F> {
@@ -41,13 +55,13 @@ pub(crate) fn asymptotic_time<F: Float>(a: &Asymptote<F>, j1: F, j2: F) -> Time<
         // integral of J dJ / (B J^2 + C): t_b2r, and t_b2 when B = 0.
         let squares = drop * (j1 + j2);
         let base = a.linear * j2 * j2 + a.inverse;
-        Time::At(squares / (F::TWO * base) * ln1p_ratio(a.linear * squares / base))
+        Time::At(log_growth(squares / base, a.linear) * F::HALF)
     } else if a.constant > F::ZERO {
         // integral of dJ / (A + B J): t_b1v, and t_b1 when B = 0.
         let base = a.constant + a.linear * j2;
-        Time::At(drop / base * ln1p_ratio(a.linear * drop / base))
+        Time::At(log_growth(drop / base, a.linear))
     } else if a.linear > F::ZERO && j2 > F::ZERO {
-        Time::At((j1 / j2).ln() / a.linear)
+        Time::At((j1.ln() - j2.ln()) / a.linear)
     } else {
         Time::Never
     }
@@ -71,9 +85,10 @@ pub(crate) fn asymptotic_count<F: Float>(
             if j2 <= F::ZERO {
                 Count::Infinite
             } else if a.constant > F::ZERO {
-                let base = a.constant + a.linear * j2;
-                let log = (j1 / j2).ln() - (a.linear * (j1 - j2) / base).ln_1p();
-                Count::Finite(k / a.constant * log)
+                // (k/A) ln(j1 (A + B j2) / (j2 (A + B j1))) = (k/A) ln1p(u),
+                // u = A (j1 - j2) / (j2 (A + B j1)): no cancellation as A -> 0.
+                let scale = (j1 - j2) / (j2 * (a.constant + a.linear * j1));
+                Count::Finite(k * scale * ln1p_ratio(a.constant * scale))
             } else if a.linear > F::ZERO {
                 Count::Finite(k / a.linear * (F::ONE / j2 - F::ONE / j1))
             } else {
@@ -190,7 +205,7 @@ pub(crate) fn atan_geometric_sum<F: Float>(x: F, restitution: F, loss: F, n: Opt
 /// Impacts with P >= P_end when impulses shrink by `factor` per impact (`decay` = ln(1/factor)):
 /// floor(ln(P0 / P_end) / decay) + 1.
 fn impacts_above_geometric<F: Float>(first: F, threshold: F, decay: F) -> F {
-    ((first / threshold).ln() / decay).floor() + F::ONE
+    ((first.ln() - threshold.ln()) / decay).floor() + F::ONE
 }
 
 impl<F: Float, D: Dissipation<F>> Scene<F, D> {
@@ -236,11 +251,11 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         let zeta = self.dissipation().damping_ratio();
         let omega = self.omega();
         let start = self.start_impulse();
-        let z = F::TWO * zeta * start / (F::from_f64(3.0) * self.loss() * scale);
-        // (3/(2 zeta Omega)) ln(1 + z) = t_b1 * ln(1+z)/z: no division by zeta.
-        let t_b1 = start / (self.loss() * omega * scale);
+        // (3/(2 zeta Omega)) ln(1 + z) = t_b1 ln(1+z)/z, z = (2 zeta / 3) j0 / r: no division
+        // by zeta, and finite where z overflows.
+        let j0_over_r = start / (self.loss() * scale);
         Some(Estimate {
-            time: t_b1 * ln1p_ratio(z),
+            time: log_growth(j0_over_r, F::TWO * zeta / F::from_f64(3.0)) / omega,
             expected_error: accuracy::t_b1v(start / scale, self.restitution(), zeta),
         })
     }
@@ -269,12 +284,10 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
     #[must_use]
     pub fn t_b2r(&self) -> Option<Estimate<F>> {
         let t_b2 = self.t_b2()?;
-        let zeta = self.dissipation().damping_ratio();
-        let q = self.orbit().offset_impulse();
-        let start = self.start_impulse();
-        let z = self.loss() * start * start / (F::TWO * F::PI * zeta * q * q);
+        // t_b2 ln(1 + z) / z with z = (r / pi) Omega t_b2.
+        let omega_t = t_b2.time * self.omega();
         Some(Estimate {
-            time: t_b2.time * ln1p_ratio(z),
+            time: log_growth(omega_t, self.loss() / F::PI) / self.omega(),
             expected_error: t_b2.expected_error,
         })
     }
@@ -292,7 +305,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         let zeta = self.dissipation().damping_ratio();
         let rate = (self.loss() / F::PI + zeta) * self.omega();
         (rate > F::ZERO).then(|| Estimate {
-            time: (self.start_impulse() / end).ln() / rate,
+            time: (self.start_impulse().ln() - end.ln()) / rate,
             expected_error: accuracy::discreteness(self).map(|(bias, _)| bias + F::from_f64(0.02)),
         })
     }
@@ -474,7 +487,12 @@ fn exact_discrete<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Predictio
     let (last_above_time, impacts_above) = match scene.threshold_impulse() {
         Some(threshold) => {
             let n = impacts_above_geometric(scene.first_impulse(), threshold, decay);
-            (Time::At(time_of(n - F::ONE)), Count::Finite(n))
+            if n.is_finite() {
+                (Time::At(time_of(n - F::ONE)), Count::Finite(n))
+            } else {
+                // More impacts than the float counts: beyond range (flagged by the caller).
+                (Time::At(F::MAX * F::TWO), Count::Finite(n))
+            }
         }
         None => (end_time, Count::Infinite),
     };

@@ -209,6 +209,20 @@ pub(crate) fn positive<F: crate::Float>(value: F, parameter: Parameter) -> Resul
     }
 }
 
+/// The physical domain of dimensional inputs (SI): from 1e-30 to 1e30. MEMS to contactors
+/// span about 12 orders of magnitude inside it; outside, products the model forms (up to
+/// Omega^3 Delta^2) would leave the float's range.
+pub const PHYSICAL_RANGE: (f64, f64) = (1e-30, 1e30);
+
+/// Checks that a dimensional value is finite, positive and within [`PHYSICAL_RANGE`].
+pub(crate) fn physical<F: crate::Float>(value: F, parameter: Parameter) -> Result<F, Error> {
+    let value = positive(value, parameter)?;
+    if value < F::from_f64(PHYSICAL_RANGE.0) || value > F::from_f64(PHYSICAL_RANGE.1) {
+        return Err(Error::new(parameter, Reason::OutOfRange));
+    }
+    Ok(value)
+}
+
 /// Checks that a value is finite and >= 0.
 pub(crate) fn non_negative<F: crate::Float>(value: F, parameter: Parameter) -> Result<F, Error> {
     let value = finite(value, parameter)?;

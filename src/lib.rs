@@ -40,7 +40,7 @@ mod window;
 
 pub use averaged::{Averaged, Bodies, EnvelopePoint, Motion};
 pub use closed::Estimate;
-pub use error::{Error, Parameter, Reason};
+pub use error::{Error, Parameter, Reason, PHYSICAL_RANGE};
 pub use float::Float;
 pub use map::{Impact, MapEnd, MapImpacts, DEFAULT_MAX_IMPACTS};
 pub use mechanisms::{
@@ -52,5 +52,8 @@ pub use orbit::{Orbit, OrbitPoint};
 pub use prediction::{Approximations, ClosedForm, Count, Prediction, Tier, Time};
 pub use quadrature::Nodes;
 pub use regime::Regime;
-pub use scene::{Contact, Frequency, Offset, Reduction, Restitution, Scene, Threshold, TwoBody};
+pub use scene::{
+    Contact, Frequency, Offset, Reduction, Restitution, Scene, Threshold, TwoBody, LARGEST_DAMPING,
+    SMALLEST_RATE, SMALLEST_RESTITUTION,
+};
 pub use window::{preload_bounce_time, window_ticks, LeadingOrder, Margin, Window};

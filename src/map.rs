@@ -112,7 +112,9 @@ impl<F: Float, D: Dissipation<F>> Iterator for MapImpacts<'_, F, D> {
         if self.end.is_some() {
             return None;
         }
-        let j = F::TWO * restitution * self.speed;
+        // R v as v - r v: keeps the loss where R rounds to 1 (r < 6e-8 in f32).
+        let departure = self.speed - scene.loss() * self.speed;
+        let j = F::TWO * departure;
         let preload = scene.delta() < F::ZERO;
         let stop = if scene.regime() == Regime::SingleImpact {
             Some(MapEnd::NoReturn)

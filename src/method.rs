@@ -84,6 +84,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
             Method::Map { max_impacts } => map::predict(self, max_impacts),
             Method::Auto(tolerance) => self.auto(tolerance),
         }
+        .within_range()
     }
 
     /// The averaged model, for its envelope J(t) and laws of motion.
@@ -107,7 +108,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
             .threshold_generating()
             .unwrap_or(start * F::TAIL_CUTOFF)
             .max(F::TAIL_CUTOFF * self.omega() * self.delta().abs());
-        let (panels, _) = panel_count((start / floor).ln().max(F::ZERO));
+        let (panels, _) = panel_count((start.ln() - floor.ln()).max(F::ZERO));
         let averaged_cost = F::from_u32(panels.saturating_mul(Nodes::N8.count()));
         let map_cost = match (
             self.regime(),
@@ -116,7 +117,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         ) {
             (Regime::ZenoAccumulation, _, _) => {
                 let decay = -(-self.loss()).ln_1p();
-                (start / floor).ln().max(F::ONE) / decay
+                (start.ln() - floor.ln()).max(F::ONE) / decay
             }
             (_, Some(n), _) | (_, None, Some(n)) => n,
             _ => F::MAX,

@@ -98,6 +98,9 @@ impl Approximations {
     pub const MAP_CONTINUED_AVERAGED: Self = Self(1 << 2);
     /// A quadrature reached its panel cap before its range ended.
     pub const PANELS_CAPPED: Self = Self(1 << 3);
+    /// A time or count exceeded the float's range: it is reported as `Never` / `Infinite`
+    /// (for the bounce, "longer than anything this type can count").
+    pub const BEYOND_RANGE: Self = Self(1 << 4);
 
     /// True when every flag of `other` is set.
     #[must_use]
@@ -155,6 +158,29 @@ pub struct Prediction<F> {
 }
 
 impl<F: Float> Prediction<F> {
+    /// Maps times and counts beyond the float's range to `Never` / `Infinite`, flagged
+    /// [`Approximations::BEYOND_RANGE`] (NaN is left alone: it would be a bug).
+    pub(crate) fn within_range(mut self) -> Self {
+        let in_range = |x: F| x.is_finite() || x.is_nan();
+        for t in [&mut self.end_time, &mut self.last_above_time] {
+            if let Time::At(s) = *t {
+                if !in_range(s) {
+                    *t = Time::Never;
+                    self.approximations = self.approximations.with(Approximations::BEYOND_RANGE);
+                }
+            }
+        }
+        for n in [&mut self.impacts_above, &mut self.impacts_total] {
+            if let Count::Finite(v) = *n {
+                if !in_range(v) {
+                    *n = Count::Infinite;
+                    self.approximations = self.approximations.with(Approximations::BEYOND_RANGE);
+                }
+            }
+        }
+        self
+    }
+
     /// The time a debounce window must cover: the end of the bounce when finite, else the last
     /// impact above the threshold; `None` when both are endless.
     #[must_use]

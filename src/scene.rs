@@ -1,6 +1,6 @@
 //! The description of one contact event, validated once: physics.md sec. 1.
 
-use crate::error::{derived, finite, non_negative, positive, Error, Parameter, Reason};
+use crate::error::{derived, finite, non_negative, physical, Error, Parameter, Reason};
 use crate::mechanisms::{
     restitution::restitution_asymptote, restitution_rate, AnyDissipation, Asymptote, Dissipation,
     Hereditary, Undamped, Viscous,
@@ -125,6 +125,77 @@ pub struct Reduction<F> {
     pub frequency_mismatch: F,
 }
 
+/// The smallest non-zero r = 1 - R and zeta the model takes.
+pub const SMALLEST_RATE: f64 = 1e-12;
+/// The smallest coefficient of restitution the model takes (an impact that keeps less than a
+/// millionth of its speed is a plastic one).
+pub const SMALLEST_RESTITUTION: f64 = 1e-6;
+/// The largest damping ratio the model takes.
+pub const LARGEST_DAMPING: f64 = 1e3;
+
+/// The model's domain: time scales go like 1/r and 1/zeta, so a non-zero loss or damping
+/// ratio is at least [`SMALLEST_RATE`] (below, it is zero over any physical horizon: give 0),
+/// R at least [`SMALLEST_RESTITUTION`], and zeta at most [`LARGEST_DAMPING`].
+fn check_domain<F: Float>(
+    given: Restitution<F>,
+    restitution: F,
+    loss: F,
+    zeta: F,
+) -> Result<(), Error> {
+    let smallest = F::from_f64(SMALLEST_RATE);
+    if restitution < F::from_f64(SMALLEST_RESTITUTION) {
+        let parameter = match given {
+            Restitution::Coefficient(_) => Parameter::Restitution,
+            Restitution::Loss(_) => Parameter::OneMinusRestitution,
+        };
+        return Err(Error::new(parameter, Reason::OutOfRange));
+    }
+    if loss > F::ZERO && loss < smallest {
+        return Err(Error::new(
+            Parameter::OneMinusRestitution,
+            Reason::OutOfRange,
+        ));
+    }
+    if (zeta > F::ZERO && zeta < smallest) || zeta > F::from_f64(LARGEST_DAMPING) {
+        return Err(Error::new(Parameter::DampingRatio, Reason::OutOfRange));
+    }
+    Ok(())
+}
+
+/// The coefficient that ends (or decays) the regime must be a normal number, or the
+/// prediction would silently lose it (e.g. r Omega^2 |Delta| underflowing).
+fn check_regime_scale<F: Float>(
+    regime: Regime,
+    asymptote: &Asymptote<F>,
+    kernel: bool,
+    loss: F,
+    delta: F,
+) -> Result<(), Error> {
+    let normal = |value: F, parameter: Parameter| {
+        if value >= F::MIN_POSITIVE && value.is_finite() {
+            Ok(())
+        } else {
+            Err(Error::new(parameter, Reason::Overflow))
+        }
+    };
+    match regime {
+        Regime::ZenoAccumulation => normal(asymptote.constant, Parameter::OneMinusRestitution),
+        Regime::LastImpact if kernel => normal(asymptote.inverse, Parameter::KernelAmplitude),
+        Regime::LastImpact => normal(asymptote.inverse, Parameter::DampingRatio),
+        // An endless decay without a kernel is exponential at small J: its rate must be
+        // normal too (a subnormal zeta would make J / |E1| infinite).
+        Regime::Endless if !kernel => {
+            let culprit = if loss > F::ZERO && delta >= F::ZERO {
+                Parameter::OneMinusRestitution
+            } else {
+                Parameter::DampingRatio
+            };
+            normal(asymptote.linear, culprit)
+        }
+        _ => Ok(()),
+    }
+}
+
 /// See [`Scene::impulse_floor`].
 fn impulse_floor<F: Float>(orbit: &Orbit<F>) -> F {
     F::MIN_POSITIVE * F::from_f64(1e3) * orbit.offset_impulse().abs().max(F::ONE)
@@ -145,12 +216,18 @@ impl<F: Float> TwoBody<F> {
     /// The offending mass, stiffness or damping when NaN, infinite, or not positive (masses,
     /// stiffnesses) or negative (damping).
     pub fn reduce(&self) -> Result<Reduction<F>, Error> {
-        let m1 = positive(self.m1, Parameter::Mass1)?;
-        let c1 = positive(self.c1, Parameter::Stiffness1)?;
+        let m1 = physical(self.m1, Parameter::Mass1)?;
+        let c1 = physical(self.c1, Parameter::Stiffness1)?;
         let d1 = non_negative(self.d1, Parameter::Damping1)?;
-        let m2 = positive(self.m2, Parameter::Mass2)?;
-        let c2 = positive(self.c2, Parameter::Stiffness2)?;
+        if d1 > F::ZERO {
+            physical(d1, Parameter::Damping1)?;
+        }
+        let m2 = physical(self.m2, Parameter::Mass2)?;
+        let c2 = physical(self.c2, Parameter::Stiffness2)?;
         let d2 = non_negative(self.d2, Parameter::Damping2)?;
+        if d2 > F::ZERO {
+            physical(d2, Parameter::Damping2)?;
+        }
         let total = derived(m1 + m2, Parameter::Mass1)?;
         let w1 = derived(c1 / m1, Parameter::Stiffness1)?;
         let w2 = derived(c2 / m2, Parameter::Stiffness2)?;
@@ -182,10 +259,10 @@ impl<F: Float> Frequency<F> {
     /// Omega, and the stiffness when given.
     fn validate(self) -> Result<(F, Option<F>), Error> {
         match self {
-            Self::Omega(omega) => Ok((positive(omega, Parameter::Omega)?, None)),
+            Self::Omega(omega) => Ok((physical(omega, Parameter::Omega)?, None)),
             Self::MassStiffness { mass, stiffness } => {
-                let mass = positive(mass, Parameter::Mass)?;
-                let stiffness = positive(stiffness, Parameter::Stiffness)?;
+                let mass = physical(mass, Parameter::Mass)?;
+                let stiffness = physical(stiffness, Parameter::Stiffness)?;
                 let omega = derived((stiffness / mass).sqrt(), Parameter::Stiffness)?;
                 Ok((omega, Some(stiffness)))
             }
@@ -197,9 +274,15 @@ impl<F: Float> Offset<F> {
     /// Delta (m), from the preload force and the stiffness where needed.
     fn validate(self, stiffness: Option<F>) -> Result<F, Error> {
         match self {
-            Self::Delta(delta) => finite(delta, Parameter::Delta),
+            Self::Delta(delta) => {
+                let delta = finite(delta, Parameter::Delta)?;
+                if delta != F::ZERO {
+                    physical(delta.abs(), Parameter::Delta)?;
+                }
+                Ok(delta)
+            }
             Self::PreloadForce(force) => {
-                let force = positive(force, Parameter::PreloadForce)?;
+                let force = physical(force, Parameter::PreloadForce)?;
                 let stiffness =
                     stiffness.ok_or(Error::new(Parameter::PreloadForce, Reason::NeedsStiffness))?;
                 Ok(-derived(force / stiffness, Parameter::PreloadForce)?)
@@ -251,7 +334,7 @@ impl<F: Float> Threshold<F> {
                 )?))
             }
             Self::Impulse(impulse) => {
-                let impulse = positive(impulse, Parameter::ThresholdImpulse)?;
+                let impulse = physical(impulse, Parameter::ThresholdImpulse)?;
                 if impulse >= first_impulse {
                     return Err(Error::new(
                         Parameter::ThresholdImpulse,
@@ -293,6 +376,9 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
     /// # Errors
     /// An [`Error`] naming the parameter for: NaN or infinite values; Omega, mass, stiffness,
     /// closing speed or preload force not positive; R outside (0, 1] or r outside [0, 1); a
+    /// non-zero r or zeta below [`SMALLEST_RATE`] (1e-12), R below [`SMALLEST_RESTITUTION`]
+    /// (1e-6) or zeta above [`LARGEST_DAMPING`] (1e3), the model's domain
+    /// ([`Reason::OutOfRange`]); a
     /// threshold fraction outside (0, 1) or an impulse not positive or at or above the first
     /// impulse; a preload force without a stiffness; an [`Regime::Endless`] regime with no
     /// threshold ([`Reason::Required`]); combinations that overflow ([`Reason::Overflow`]).
@@ -309,7 +395,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         let stiffness = stiffness.or(reduction.map(|r| r.reduced_mass * r.omega * r.omega));
         let delta = contact.offset.validate(stiffness)?;
         let (restitution, loss) = contact.restitution.validate()?;
-        let closing_speed = positive(contact.closing_speed, Parameter::ClosingSpeed)?;
+        let closing_speed = physical(contact.closing_speed, Parameter::ClosingSpeed)?;
         let first_impulse = derived(
             (F::ONE + restitution) * closing_speed,
             Parameter::ClosingSpeed,
@@ -328,6 +414,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
             derived(omega * q * q, Parameter::Delta)?;
         }
         let zeta = dissipation.damping_ratio();
+        check_domain(contact.restitution, restitution, loss, zeta)?;
         let sign: i8 = if delta < F::ZERO {
             -1
         } else {
@@ -344,6 +431,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         }
         let orbit = Orbit::new(omega, delta);
         let asymptote = restitution_asymptote(loss, &orbit).plus(dissipation.asymptote(&orbit));
+        check_regime_scale(regime, &asymptote, dissipation.has_kernel(), loss, delta)?;
         if let Some(p_end) = threshold {
             let generating = p_end * F::TWO * restitution / (F::ONE + restitution);
             if generating < impulse_floor(&orbit) {

@@ -191,7 +191,8 @@ pub const fn preload_bounce_time(
     let start = 2.0 * restitution * speed;
     let seconds = start * mass / ((1.0 - restitution) * force);
     let j0_squared = start * start * mass * stiffness / (force * force);
-    if !seconds.is_finite() || !j0_squared.is_finite() {
+    // Overflow, or underflow to 0 s (subnormal inputs): no silent wrong number.
+    if !seconds.is_finite() || seconds <= 0.0 || !j0_squared.is_finite() {
         return Err(Error::new(Parameter::PreloadForce, Reason::Overflow));
     }
     Ok(LeadingOrder {

@@ -75,8 +75,13 @@ fn mass_and_stiffness_must_be_finite_and_positive() {
         expect(ms(v, 1.0), Parameter::Mass, Reason::NotPositive);
         expect(ms(1.0, v), Parameter::Stiffness, Reason::NotPositive);
     }
-    // Valid alone, but Omega = sqrt(c/m) overflows.
-    expect(ms(1e-300, 1e300), Parameter::Stiffness, Reason::Overflow);
+    // Outside the physical domain of SI inputs, [1e-30, 1e30].
+    expect(ms(1e-31, 1.0), Parameter::Mass, Reason::OutOfRange);
+    expect(ms(1.0, 2e30), Parameter::Stiffness, Reason::OutOfRange);
+    assert!(
+        Scene::new(ms(1e-30, 1e30), Undamped).is_ok(),
+        "Omega = 1e30 is inside the domain, and f64 holds its products"
+    );
 }
 
 #[test]
@@ -91,15 +96,25 @@ fn delta_must_be_finite() {
             reason,
         );
     }
-    // 2 Omega Delta underflows to zero: the scale of the offset is lost.
-    expect(
-        Contact {
-            offset: Offset::Delta(-1e-320),
-            ..good()
-        },
-        Parameter::Delta,
-        Reason::Overflow,
-    );
+    // A non-zero |Delta| within the physical domain [1e-30, 1e30]; 0 is grazing.
+    for d in [-1e-320, 2e30] {
+        expect(
+            Contact {
+                offset: Offset::Delta(d),
+                ..good()
+            },
+            Parameter::Delta,
+            Reason::OutOfRange,
+        );
+    }
+    // Inside the domain every product the model forms fits f64 (at most ~1e150): the corner
+    // Omega = |Delta| = 1e30 is valid (f32 overflows first: see the f32 test).
+    let fast = Contact {
+        frequency: Frequency::Omega(1e30),
+        offset: Offset::Delta(-1e30),
+        ..good()
+    };
+    assert!(Scene::new(fast, Undamped).is_ok());
 }
 
 #[test]
@@ -210,14 +225,16 @@ fn closing_speed_must_be_finite_and_positive() {
             Reason::NotPositive,
         );
     }
-    expect(
-        Contact {
-            closing_speed: f64::MAX,
-            ..good()
-        },
-        Parameter::ClosingSpeed,
-        Reason::Overflow,
-    );
+    for v in [f64::MAX, 1e-31] {
+        expect(
+            Contact {
+                closing_speed: v,
+                ..good()
+            },
+            Parameter::ClosingSpeed,
+            Reason::OutOfRange,
+        );
+    }
 }
 
 #[test]
@@ -504,7 +521,7 @@ fn thresholds_below_the_resolvable_impulse_are_refused() {
         threshold: Threshold::Impulse(1e-306),
         ..good()
     };
-    expect(c, Parameter::ThresholdImpulse, Reason::Overflow);
+    expect(c, Parameter::ThresholdImpulse, Reason::OutOfRange);
     assert!(Scene::new(
         Contact {
             threshold: Threshold::FractionOfFirst(1e-250),
@@ -513,4 +530,35 @@ fn thresholds_below_the_resolvable_impulse_are_refused() {
         Undamped
     )
     .is_ok());
+}
+
+#[test]
+fn the_model_domain_is_enforced() {
+    // r and zeta: 0, or at least 1e-12; zeta at most 1e3; R at least 1e-6.
+    let loss = |r| Contact {
+        restitution: Restitution::Loss(r),
+        ..good()
+    };
+    expect(
+        loss(1e-13),
+        Parameter::OneMinusRestitution,
+        Reason::OutOfRange,
+    );
+    assert!(Scene::new(loss(1e-12), Undamped).is_ok());
+    let coefficient = Contact {
+        restitution: Restitution::Coefficient(1e-7),
+        ..good()
+    };
+    expect(coefficient, Parameter::Restitution, Reason::OutOfRange);
+    for zeta in [1e-13, 1.1e3] {
+        let e = Scene::new(good(), Viscous::new(zeta).unwrap()).unwrap_err();
+        assert_eq!(e, Error::new(Parameter::DampingRatio, Reason::OutOfRange));
+    }
+    assert!(Scene::new(good(), Viscous::new(1e3).unwrap()).is_ok());
+    assert!(Scene::new(good(), Viscous::new(1e-12).unwrap()).is_ok());
+    let e = Hereditary::exponential(1.0, 1e-31).unwrap_err();
+    assert_eq!(
+        e,
+        Error::new(Parameter::KernelTimeConstant, Reason::OutOfRange)
+    );
 }

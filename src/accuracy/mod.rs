@@ -84,7 +84,7 @@ pub(crate) fn discreteness<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> 
     if scene.dissipation().has_kernel() || zeta >= F::ONE {
         return None;
     }
-    let x = (scene.first_impulse() / scene.threshold_impulse()?).ln();
+    let x = scene.first_impulse().ln() - scene.threshold_impulse()?.ln();
     let damping = F::PI * zeta;
     let per_impact = (-(-scene.loss()).ln_1p() + damping / (F::ONE - zeta * zeta).sqrt()) * c(1.01);
     let continuous = scene.loss() + damping;

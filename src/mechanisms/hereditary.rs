@@ -1,7 +1,7 @@
 //! Hereditary (viscoelastic) damping with an exponential relaxation kernel: physics.md sec. 3.
 
 use super::{offset_class, sealed, Asymptote, Dissipation, Offset};
-use crate::error::{derived, positive, Error, Parameter, Reason};
+use crate::error::{derived, physical, positive, Error, Parameter, Reason};
 use crate::orbit::{Orbit, OrbitPoint};
 use crate::Float;
 
@@ -66,7 +66,7 @@ impl<F: Float> Hereditary<F> {
     /// kappa tau^2 overflows or underflows.
     pub fn exponential(kappa: F, tau: F) -> Result<Self, Error> {
         let kappa = positive(kappa, Parameter::KernelAmplitude)?;
-        let tau = positive(tau, Parameter::KernelTimeConstant)?;
+        let tau = physical(tau, Parameter::KernelTimeConstant)?;
         let low_frequency = derived(kappa * tau * tau, Parameter::KernelAmplitude)?;
         Ok(Self {
             kappa,

@@ -93,6 +93,12 @@ impl<F: Float> Compensated<F> {
     }
     pub(crate) fn add(&mut self, x: F) {
         let t = self.sum + x;
+        if !t.is_finite() {
+            // Overflow: the carry would turn inf into NaN ((sum - inf) + inf).
+            self.sum = t;
+            self.carry = F::ZERO;
+            return;
+        }
         if self.sum.abs() >= x.abs() {
             self.carry += (self.sum - t) + x;
         } else {

@@ -1,0 +1,220 @@
+//! Properties physics guarantees, on the exact reference and every tier: a faster closing
+//! speed bounces longer on a preload, more loss at the impacts (larger r) bounces shorter,
+//! and the time to a fixed threshold is continuous across Delta = 0. And f32 follows f64
+//! within a stated error over the whole reference grid.
+
+use contact_bounce::{
+    Contact, Frequency, Method, Nodes, Offset, Restitution, Scene, Threshold, Viscous,
+};
+use host_tests::grid::grid;
+use host_tests::reference::{simulate, OneBody, DEFAULT_BUDGET};
+
+const OMEGA: f64 = 1000.0;
+
+fn one(delta: f64, r: f64, zeta: f64, v0: f64, threshold: Option<f64>) -> OneBody {
+    OneBody {
+        omega: OMEGA,
+        delta,
+        restitution: 1.0 - r,
+        zeta,
+        closing_speed: v0,
+        threshold,
+    }
+}
+
+fn core(s: &OneBody) -> Scene<f64, Viscous<f64>> {
+    Scene::new(
+        Contact {
+            frequency: Frequency::Omega(s.omega),
+            offset: Offset::Delta(s.delta),
+            restitution: Restitution::Loss(1.0 - s.restitution),
+            closing_speed: s.closing_speed,
+            threshold: s.threshold.map_or(Threshold::None, Threshold::Impulse),
+        },
+        Viscous::new(s.zeta).unwrap(),
+    )
+    .unwrap()
+}
+
+/// The bounce time by the reference and by each tier.
+fn times(s: &OneBody) -> Vec<(&'static str, f64)> {
+    let truth = simulate(s, DEFAULT_BUDGET).unwrap();
+    let scene = core(s);
+    let mut out = vec![("exact", truth.end_time.or(truth.last_above_time).unwrap())];
+    for (name, m) in [
+        ("closed", Method::Closed),
+        ("averaged", Method::Averaged(Nodes::N8)),
+        (
+            "map",
+            Method::Map {
+                max_impacts: 10_000_000,
+            },
+        ),
+    ] {
+        out.push((name, scene.predict(m).bounce_time().unwrap()));
+    }
+    out
+}
+
+#[test]
+fn a_faster_closing_speed_bounces_longer_on_a_preload() {
+    // Preload flights lengthen with speed (T = (2/Omega) atan(a / (Omega |Delta|))), so the
+    // accumulation time and the time to a fixed threshold grow with v0: strictly, for the
+    // reference and for every tier.
+    for (r, zeta, threshold) in [
+        (0.3, 0.0, None),
+        (0.05, 0.01, None),
+        (0.5, 0.1, None),
+        (0.3, 0.01, Some(1e-3)),
+        (0.0, 0.05, Some(1e-3)),
+    ] {
+        let mut previous: Option<Vec<(&str, f64)>> = None;
+        for v0 in [0.01, 0.03, 0.1, 0.3, 1.0, 3.0, 10.0] {
+            let now = times(&one(-1e-3, r, zeta, v0, threshold));
+            if let Some(before) = &previous {
+                for ((name, t0), (_, t1)) in before.iter().zip(&now) {
+                    assert!(
+                        t1 > t0,
+                        "{name}, r {r}, zeta {zeta}: t({v0}) = {t1} <= {t0}"
+                    );
+                }
+            }
+            previous = Some(now);
+        }
+    }
+}
+
+#[test]
+fn the_continuous_tiers_bounce_longer_for_faster_closing_in_a_gap_too() {
+    // In a gap the exact last impact is a sawtooth in v0 (flights shorten with speed while
+    // the count steps up), but the averaged and closed tiers are integrals from J_B: monotone.
+    for (r, zeta) in [(0.1, 0.01), (0.5, 0.001), (0.0, 0.05)] {
+        let mut previous: Option<(f64, f64)> = None;
+        for v0 in [0.3, 1.0, 3.0, 10.0, 30.0] {
+            let scene = core(&one(1e-3, r, zeta, v0, None));
+            let a = scene
+                .predict(Method::Averaged(Nodes::N8))
+                .bounce_time()
+                .unwrap();
+            let c = scene.predict(Method::Closed).bounce_time().unwrap();
+            if let Some((a0, c0)) = previous {
+                assert!(a > a0 && c > c0, "r {r} zeta {zeta} v0 {v0}");
+            }
+            previous = Some((a, c));
+        }
+    }
+}
+
+#[test]
+fn more_loss_at_the_impacts_bounces_shorter() {
+    for (zeta, threshold) in [(0.0, None), (0.02, None), (0.02, Some(1e-3))] {
+        let mut previous: Option<Vec<(&str, f64)>> = None;
+        for r in [0.001, 0.01, 0.05, 0.2, 0.5, 0.8, 0.95] {
+            let now = times(&one(-1e-3, r, zeta, 0.5, threshold));
+            if let Some(before) = &previous {
+                for ((name, t0), (_, t1)) in before.iter().zip(&now) {
+                    assert!(t1 < t0, "{name}, zeta {zeta}: t(r = {r}) = {t1} >= {t0}");
+                }
+            }
+            previous = Some(now);
+        }
+    }
+}
+
+#[test]
+fn the_time_to_a_threshold_is_continuous_across_zero_offset() {
+    // Delta -> 0 from both sides at a fixed threshold (1e-3 of the first impulse): the
+    // reference, the averaged model and the map tend to their Delta = 0 value like 1/j_end,
+    // j_end = J_end / (Omega |Delta|) = 1e-3 j0 the dimensionless impulse at the threshold
+    // (measured: 0.12-0.16 / j_end). Asserted: below 1 / j_end, and shrinking with |Delta|.
+    for (r, zeta) in [(0.3, 0.01), (0.1, 0.05)] {
+        let v0 = 0.5;
+        let at = |delta: f64| {
+            let s = one(delta, r, zeta, v0, Some(1e-3 * (2.0 - r) * v0));
+            let truth = simulate(&s, DEFAULT_BUDGET)
+                .unwrap()
+                .last_above_time
+                .unwrap();
+            let scene = core(&s);
+            let averaged = scene
+                .predict(Method::Averaged(Nodes::N8))
+                .last_above_time
+                .seconds()
+                .unwrap();
+            let map = scene
+                .predict(Method::Map {
+                    max_impacts: 10_000_000,
+                })
+                .last_above_time
+                .seconds()
+                .unwrap();
+            [truth, averaged, map]
+        };
+        let zero = at(0.0);
+        for side in [-1.0, 1.0] {
+            let mut previous = [f64::INFINITY; 3];
+            for j0 in [1e4, 1e6, 1e8, 1e10] {
+                let delta = side * 2.0 * (1.0 - r) * v0 / (OMEGA * j0);
+                let near = at(delta);
+                for k in 0..3 {
+                    let gap = (near[k] / zero[k] - 1.0).abs();
+                    assert!(
+                        gap < 1.0 / (1e-3 * j0),
+                        "tier {k}, r {r}, side {side}, j0 {j0}: {} vs {}",
+                        near[k],
+                        zero[k]
+                    );
+                    assert!(
+                        gap < previous[k],
+                        "tier {k}, r {r}, side {side}: not converging at j0 {j0}"
+                    );
+                    previous[k] = gap;
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn f32_follows_f64_over_the_grid() {
+    // libm backend, R given as r: measured at most 3.6e-5 (the map with zeta = 0.1-0.3 at small
+    // j0, where f32's tail cutoff of 5e-3 takes over sooner), else below 4e-7.
+    let mut worst: f64 = 0.0;
+    for g in grid() {
+        let r = &g.reference;
+        let Ok(s64) = g.core() else { continue };
+        #[allow(clippy::cast_possible_truncation)]
+        let c32 = Contact {
+            frequency: Frequency::Omega(r.omega as f32),
+            offset: Offset::Delta(r.delta as f32),
+            restitution: Restitution::Loss((1.0 - r.restitution) as f32),
+            closing_speed: r.closing_speed as f32,
+            threshold: r
+                .threshold
+                .map_or(Threshold::None, |p| Threshold::Impulse(p as f32)),
+        };
+        #[allow(clippy::cast_possible_truncation)]
+        let s32 = Scene::new(c32, Viscous::new(r.zeta as f32).unwrap()).unwrap();
+        for (a, b) in [
+            (Method::Closed, Method::Closed),
+            (Method::Averaged(Nodes::N8), Method::Averaged(Nodes::N8)),
+            (
+                Method::Map {
+                    max_impacts: 1_000_000,
+                },
+                Method::Map {
+                    max_impacts: 1_000_000,
+                },
+            ),
+        ] {
+            let (t64, t32) = (s64.predict(a).bounce_time(), s32.predict(b).bounce_time());
+            assert_eq!(t64.is_some(), t32.is_some(), "{}", g.name);
+            if let (Some(x), Some(y)) = (t64, t32) {
+                if x > 0.0 {
+                    worst = worst.max((f64::from(y) / x - 1.0).abs());
+                }
+            }
+        }
+    }
+    assert!(worst < 1e-4, "f32 departs from f64 by {worst}");
+}
