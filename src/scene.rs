@@ -415,6 +415,11 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         }
         let zeta = dissipation.damping_ratio();
         check_domain(contact.restitution, restitution, loss, zeta)?;
+        // A kernel's force kappa y holds a static stiffness kappa tau against the spring's
+        // Omega^2: at or above it the contact has no restoring force left.
+        if dissipation.static_stiffness() >= omega * omega {
+            return Err(Error::new(Parameter::KernelAmplitude, Reason::OutOfRange));
+        }
         let sign: i8 = if delta < F::ZERO {
             -1
         } else {

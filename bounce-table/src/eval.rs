@@ -206,34 +206,55 @@ fn core_result<F: Float>(input: &SceneInput, options: &Options) -> Result<Value,
 }
 
 fn exact_result(input: &SceneInput) -> Result<Value, FieldError> {
-    if matches!(input.stiffness, Spring::TwoBody(..)) {
-        return Err(FieldError {
-            field: "two_body".to_owned(),
-            message: "the exact reference does not simulate two bodies yet: use a core method"
-                .to_owned(),
-        });
-    }
-    if input.kernel.is_some() {
+    if input.kernel.is_some() && matches!(input.stiffness, Spring::TwoBody(..)) {
         return Err(FieldError {
             field: "kernel".to_owned(),
-            message: "the exact reference does not simulate a kernel yet: use a core method"
-                .to_owned(),
+            message: "the exact reference simulates a kernel on one body only".to_owned(),
         });
     }
     // Validate (and derive Omega, Delta, P_end) exactly as the core does.
     let scene = input.core::<f64>()?;
-    let one = OneBody {
-        omega: scene.omega(),
-        delta: scene.delta(),
-        restitution: scene.restitution(),
-        zeta: scene.dissipation().damping_ratio(),
-        closing_speed: scene.closing_speed(),
-        threshold: scene.threshold_impulse(),
-    };
-    let out = reference::simulate(&one, reference::DEFAULT_BUDGET).map_err(|e| FieldError {
+    let failed = |e: reference::Failure| FieldError {
         field: String::new(),
         message: e.to_string(),
-    })?;
+    };
+    let out = if let Some(kernel) = input.kernel {
+        let k = reference::hereditary::Kernelled {
+            omega: scene.omega(),
+            zeta: scene.dissipation().damping_ratio(),
+            delta: scene.delta(),
+            restitution: scene.restitution(),
+            closing_speed: scene.closing_speed(),
+            kappa: kernel.kappa,
+            tau: kernel.tau,
+            state: kernel.state,
+            threshold: scene.threshold_impulse(),
+        };
+        reference::hereditary::simulate(&k, reference::DEFAULT_BUDGET).map_err(failed)?
+    } else if let Spring::TwoBody(b, x2, v2) = input.stiffness {
+        let pair = reference::two_body::TwoBodies {
+            m: [b.m1, b.m2],
+            c: [b.c1, b.c2],
+            d: [b.d1, b.d2],
+            delta: scene.delta(),
+            restitution: scene.restitution(),
+            closing_speed: scene.closing_speed(),
+            x2,
+            v2,
+            threshold: scene.threshold_impulse(),
+        };
+        reference::two_body::simulate(&pair, reference::DEFAULT_BUDGET).map_err(failed)?
+    } else {
+        let one = OneBody {
+            omega: scene.omega(),
+            delta: scene.delta(),
+            restitution: scene.restitution(),
+            zeta: scene.dissipation().damping_ratio(),
+            closing_speed: scene.closing_speed(),
+            threshold: scene.threshold_impulse(),
+        };
+        reference::simulate(&one, reference::DEFAULT_BUDGET).map_err(failed)?
+    };
     let regime = match out.regime {
         reference::Regime::ZenoAccumulation => "zeno_accumulation",
         reference::Regime::LastImpact => "last_impact",

@@ -271,3 +271,147 @@ pub fn off_grid(count: usize, seed: u64) -> Vec<GridScene> {
     }
     out
 }
+
+/// A two-body scene: the exact two-body reference against the core's reduction.
+#[derive(Debug, Clone)]
+pub struct TwoBodyScene {
+    /// A readable name.
+    pub name: String,
+    /// The larger partial frequency over the smaller.
+    pub mismatch: f64,
+    /// The reference's input.
+    pub reference: crate::reference::two_body::TwoBodies,
+}
+
+impl TwoBodyScene {
+    /// The core's scene (reduced exactly, or at the Rayleigh frequency).
+    ///
+    /// # Errors
+    /// When the core refuses the scene.
+    pub fn core(
+        &self,
+    ) -> Result<Scene<f64, contact_bounce::AnyDissipation<f64>>, contact_bounce::Error> {
+        let r = &self.reference;
+        Scene::two_body(
+            contact_bounce::TwoBody {
+                m1: r.m[0],
+                c1: r.c[0],
+                d1: r.d[0],
+                m2: r.m[1],
+                c2: r.c[1],
+                d2: r.d[1],
+            },
+            Offset::Delta(r.delta),
+            Restitution::Coefficient(r.restitution),
+            r.closing_speed,
+            r.threshold.map_or(Threshold::None, Threshold::Impulse),
+            None,
+        )
+    }
+}
+
+/// Preloaded two-body scenes: mass ratios 0.3-3, partial-frequency mismatch 1-3, with and
+/// without damping (each body zeta = 0.02), j0 ~ 0.5-2.
+#[must_use]
+pub fn two_body_grid() -> Vec<TwoBodyScene> {
+    let mut out = Vec::new();
+    for mismatch in [1.0, 1.02, 1.05, 1.1, 1.2, 1.3, 1.5, 2.0, 3.0] {
+        for ratio in [0.3, 1.0, 3.0] {
+            for zeta in [0.0, 0.02] {
+                for (r, v0) in [(0.6, 0.5), (0.9, 0.2)] {
+                    let m = [1e-3, 1e-3 * ratio];
+                    let c = [1e3, m[1] * 1e6 * mismatch * mismatch];
+                    let d = [2.0 * zeta * 1e3 * m[0], 2.0 * zeta * 1e3 * mismatch * m[1]];
+                    out.push(TwoBodyScene {
+                        name: format!(
+                            "two-body mismatch={mismatch} m2/m1={ratio} zeta={zeta} R={r}"
+                        ),
+                        mismatch,
+                        reference: crate::reference::two_body::TwoBodies {
+                            m,
+                            c,
+                            d,
+                            delta: -1e-3,
+                            restitution: r,
+                            closing_speed: v0,
+                            x2: 0.0,
+                            v2: 0.0,
+                            threshold: None,
+                        },
+                    });
+                }
+            }
+        }
+    }
+    out
+}
+
+/// A scene with a relaxation kernel: the exact hereditary reference against the core.
+#[derive(Debug, Clone)]
+pub struct KernelScene {
+    /// A readable name.
+    pub name: String,
+    /// The reference's input.
+    pub reference: crate::reference::hereditary::Kernelled,
+}
+
+impl KernelScene {
+    /// The core's scene (restitution and the kernel; no viscous damping).
+    ///
+    /// # Errors
+    /// When the core refuses the scene.
+    pub fn core(
+        &self,
+    ) -> Result<Scene<f64, contact_bounce::Hereditary<f64>>, contact_bounce::Error> {
+        let r = &self.reference;
+        Scene::new(
+            Contact {
+                frequency: Frequency::Omega(r.omega),
+                offset: Offset::Delta(r.delta),
+                restitution: Restitution::Coefficient(r.restitution),
+                closing_speed: r.closing_speed,
+                threshold: r.threshold.map_or(Threshold::None, Threshold::Impulse),
+            },
+            contact_bounce::Hereditary::exponential(r.kappa, r.tau)?,
+        )
+    }
+}
+
+/// Kernel scenes: preload and gap, Omega tau 0.1-10, kernel damping (kappa tau^2 / (2 Omega))
+/// 0.002-0.03, static stiffness kappa tau / Omega^2 below 0.2.
+#[must_use]
+pub fn kernel_grid() -> Vec<KernelScene> {
+    let mut out = Vec::new();
+    for (delta, r, v0) in [
+        (-1e-3, 0.5, 0.3),
+        (-1e-3, 0.9, 0.1),
+        (1e-3, 0.9, 3.0),
+        (1e-3, 1.0, 3.0),
+    ] {
+        for omega_tau in [0.1, 1.0, 10.0] {
+            for zeta_equivalent in [0.002, 0.01, 0.03] {
+                let omega = 1000.0;
+                let tau = omega_tau / omega;
+                let kappa = 2.0 * zeta_equivalent * omega / (tau * tau);
+                if r == 1.0 && zeta_equivalent < 0.01 {
+                    continue; // thousands of impacts: slow, and covered by the others
+                }
+                out.push(KernelScene {
+                    name: format!("kernel Delta={delta} R={r} Omega tau={omega_tau} zeta_eq={zeta_equivalent}"),
+                    reference: crate::reference::hereditary::Kernelled {
+                        omega,
+                        zeta: 0.0,
+                        delta,
+                        restitution: r,
+                        closing_speed: v0,
+                        kappa,
+                        tau,
+                        state: None,
+                        threshold: None,
+                    },
+                });
+            }
+        }
+    }
+    out
+}

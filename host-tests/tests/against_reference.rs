@@ -4,7 +4,9 @@
 //! it. The expected errors are physics.md sec. 6, corrected where the reference showed them
 //! wrong (see src/accuracy and docs/error-table.md); none is widened here.
 
-use host_tests::grid::{compare, grid, off_grid, Row};
+use contact_bounce::{Method, Nodes};
+use host_tests::grid::{compare, grid, off_grid, two_body_grid, Row, TwoBodyScene};
+use host_tests::reference::two_body::simulate as simulate_two;
 
 fn check(rows: &[Row]) -> Vec<String> {
     rows.iter()
@@ -87,4 +89,132 @@ fn exact_tiers_reproduce_the_reference_to_rounding() {
             );
         }
     }
+}
+
+fn two_body_problems(scenes: &[TwoBodyScene]) -> (Vec<String>, usize) {
+    let mut problems = Vec::new();
+    let mut stated = 0;
+    for scene in scenes {
+        let exact = simulate_two(&scene.reference, 50_000_000).expect("reference");
+        let truth = exact.end_time.expect("a preload sticks");
+        let core = scene.core().expect("valid");
+        for method in [
+            Method::Averaged(Nodes::N8),
+            Method::Map {
+                max_impacts: 1_000_000,
+            },
+            Method::Closed,
+        ] {
+            let p = core.predict(method);
+            let error = (p.bounce_time().expect("finite") / truth - 1.0).abs();
+            if let Some(e) = p.expected_error {
+                stated += 1;
+                if error > e {
+                    problems.push(format!(
+                        "{} / {:?}: error {error:.4} > expected {e:.4}",
+                        scene.name, p.tier
+                    ));
+                }
+            }
+        }
+    }
+    (problems, stated)
+}
+
+#[test]
+fn two_bodies_keep_their_expected_error() {
+    // The core's one-body reduction (exact for equal partial frequencies, Rayleigh otherwise)
+    // against the exact two-body simulation.
+    let (problems, stated) = two_body_problems(&two_body_grid());
+    assert!(stated > 200, "{stated}");
+    assert!(
+        problems.is_empty(),
+        "{} problems:\n{}",
+        problems.len(),
+        problems.join("\n")
+    );
+}
+
+#[test]
+fn two_bodies_keep_their_expected_error_off_the_grid() {
+    use host_tests::reference::two_body::TwoBodies;
+    let mut scenes = Vec::new();
+    for (i, (mismatch, ratio, zeta, r, v0)) in [
+        (1.03, 0.5, 0.01, 0.7, 0.4),
+        (1.07, 2.0, 0.0, 0.5, 0.8),
+        (1.15, 0.7, 0.03, 0.8, 0.3),
+        (1.25, 1.5, 0.005, 0.4, 1.2),
+        (1.4, 0.4, 0.02, 0.95, 0.1),
+        (1.45, 4.0, 0.0, 0.3, 0.6),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let m = [2e-3, 2e-3 * ratio];
+        scenes.push(TwoBodyScene {
+            name: format!("off-grid two-body {i}"),
+            mismatch,
+            reference: TwoBodies {
+                m,
+                c: [2e3 * 0.8, m[1] * 0.8e6 * mismatch * mismatch],
+                d: [
+                    2.0 * zeta * 894.4 * m[0],
+                    2.0 * zeta * 894.4 * mismatch * m[1],
+                ],
+                delta: -5e-4,
+                restitution: r,
+                closing_speed: v0,
+                x2: 0.0,
+                v2: 0.0,
+                threshold: None,
+            },
+        });
+    }
+    let (problems, stated) = two_body_problems(&scenes);
+    assert!(stated >= 12, "{stated}");
+    assert!(
+        problems.is_empty(),
+        "{} problems:\n{}",
+        problems.len(),
+        problems.join("\n")
+    );
+}
+
+#[test]
+fn kernels_keep_their_expected_error() {
+    use host_tests::grid::kernel_grid;
+    use host_tests::reference::hereditary::simulate as simulate_kernel;
+    let mut problems = Vec::new();
+    let mut stated = 0;
+    for scene in kernel_grid() {
+        let exact = simulate_kernel(&scene.reference, 50_000_000).expect("reference");
+        let truth = exact.end_time.expect("a finite end");
+        let core = scene.core().expect("valid");
+        for method in [
+            Method::Averaged(Nodes::N8),
+            Method::Map {
+                max_impacts: 1_000_000,
+            },
+            Method::Closed,
+        ] {
+            let p = core.predict(method);
+            if let (Some(e), Some(t)) = (p.expected_error, p.bounce_time()) {
+                stated += 1;
+                let error = (t / truth - 1.0).abs();
+                if error > e {
+                    problems.push(format!(
+                        "{} / {:?}: error {error:.4} > expected {e:.4}",
+                        scene.name, p.tier
+                    ));
+                }
+            }
+        }
+    }
+    assert!(stated >= 25, "{stated}");
+    assert!(
+        problems.is_empty(),
+        "{} problems:\n{}",
+        problems.len(),
+        problems.join("\n")
+    );
 }

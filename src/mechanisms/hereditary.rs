@@ -190,6 +190,9 @@ impl<F: Float> Dissipation<F> for Hereditary<F> {
     fn has_kernel(&self) -> bool {
         true
     }
+    fn static_stiffness(&self) -> F {
+        self.kappa * self.tau
+    }
     fn rate(&self, point: &OrbitPoint<F>) -> F {
         let two_pi2 = F::TWO * F::PI * F::PI;
         -two_pi2 * point.impulse() * self.harmonic_sum(point).value

@@ -77,6 +77,12 @@ pub trait Dissipation<F: Float>: sealed::Sealed + Copy + Debug {
     fn rate(&self, point: &OrbitPoint<F>) -> F;
     /// This mechanism's small-impulse asymptote on `orbit`.
     fn asymptote(&self, orbit: &Orbit<F>) -> Asymptote<F>;
+    /// The static stiffness it takes from the spring, per unit mass (1/s^2): kappa tau for a
+    /// relaxation kernel (its force kappa y tends to kappa tau x for slow motion), 0 otherwise.
+    /// The averaged model keeps only the dissipative part; this is the part it leaves out.
+    fn static_stiffness(&self) -> F {
+        F::ZERO
+    }
 }
 
 /// No dissipation between impacts: restitution only.
@@ -128,6 +134,9 @@ impl<F: Float, A: Dissipation<F>> Dissipation<F> for Option<A> {
         self.as_ref()
             .map_or(Asymptote::zero(), |m| m.asymptote(orbit))
     }
+    fn static_stiffness(&self) -> F {
+        self.as_ref().map_or(F::ZERO, Dissipation::static_stiffness)
+    }
 }
 
 impl<A: sealed::Sealed, B: sealed::Sealed> sealed::Sealed for (A, B) {}
@@ -147,6 +156,9 @@ impl<F: Float, A: Dissipation<F>, B: Dissipation<F>> Dissipation<F> for (A, B) {
     }
     fn asymptote(&self, orbit: &Orbit<F>) -> Asymptote<F> {
         self.0.asymptote(orbit).plus(self.1.asymptote(orbit))
+    }
+    fn static_stiffness(&self) -> F {
+        self.0.static_stiffness() + self.1.static_stiffness()
     }
 }
 

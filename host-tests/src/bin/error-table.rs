@@ -74,6 +74,53 @@ fn calibration(out: &mut String) {
     );
 }
 
+/// The one-body reduction of two bodies against the exact two-body simulation, per partial
+/// frequency mismatch: the figures behind `with_reduction`.
+fn two_bodies(out: &mut String) {
+    use contact_bounce::{Method, Nodes};
+    use host_tests::grid::two_body_grid;
+    use host_tests::reference::two_body::simulate;
+    let mut worst: BTreeMap<u32, (f64, f64)> = BTreeMap::new();
+    for scene in two_body_grid() {
+        let (Ok(core), Ok(exact)) = (scene.core(), simulate(&scene.reference, 50_000_000)) else {
+            continue;
+        };
+        let Some(truth) = exact.end_time else {
+            continue;
+        };
+        let error = |m| {
+            core.predict(m)
+                .bounce_time()
+                .map_or(f64::INFINITY, |t| (t / truth - 1.0).abs())
+        };
+        #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+        let key = (scene.mismatch * 100.0).round() as u32;
+        let entry = worst.entry(key).or_insert((0.0, 0.0));
+        entry.0 = entry.0.max(error(Method::Averaged(Nodes::N8)));
+        entry.1 = entry.1.max(error(Method::Map {
+            max_impacts: 1_000_000,
+        }));
+    }
+    let _ = writeln!(out, "\n## Two bodies reduced to one\n");
+    let _ = writeln!(out, "Preloaded pairs (mass ratios 0.3-3, zeta 0 and 0.02, R 0.6 and 0.9): the core's reduction (exact for");
+    let _ = writeln!(out, "equal partial frequencies, Rayleigh otherwise) against the exact two-body simulation; max error of");
+    let _ = writeln!(
+        out,
+        "the accumulation time per partial-frequency mismatch.\n"
+    );
+    let _ = writeln!(out, "| mismatch | averaged (8 nodes) | map |");
+    let _ = writeln!(out, "|---:|---:|---:|");
+    for (key, (a, m)) in worst {
+        let _ = writeln!(
+            out,
+            "| {:.2} | {} | {} |",
+            f64::from(key) / 100.0,
+            percent(a),
+            percent(m)
+        );
+    }
+}
+
 fn main() -> ExitCode {
     let write = std::env::args().any(|a| a == "--write");
     let mut rows: Vec<Row> = Vec::new();
@@ -155,6 +202,7 @@ fn main() -> ExitCode {
         let _ = writeln!(out, "- not compared: {f}");
     }
     calibration(&mut out);
+    two_bodies(&mut out);
     print!("{out}");
     if write {
         if let Err(e) = std::fs::write("docs/error-table.md", &out) {

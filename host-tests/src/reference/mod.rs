@@ -9,7 +9,9 @@
 //! - `impacts_total`: the total when finite, `None` when infinite (Zeno or endless).
 
 pub mod brent;
+pub mod hereditary;
 pub mod one_body;
+pub mod two_body;
 
 use one_body::{Oscillator, ZENO_TAIL};
 

@@ -1,0 +1,542 @@
+//! Exact event-driven simulation of two bodies (the paper's Eq. 1 and Fig. 2a).
+//!
+//! m_i x_i'' + d_i x_i' + c_i x_i = -/+ N, contact at x = x1 - x2 = Delta. Apart (N = 0) each
+//! body is a free damped oscillator in closed form; an impact (x reaches Delta closing) is a
+//! momentum-conserving Newton impact, u -> -R u for the relative velocity u = v1 - v2. When the
+//! impacts accumulate (relative departure below 1e-6 Omega_rel |Delta|), their geometric tail is
+//! summed and the bodies stick: x1 = x2 + Delta, moving together while the contact force N is
+//! compressive; when N turns tensile they separate and bounce again (with unequal partial
+//! frequencies contacts can reopen).
+//!
+//! The next impact is searched by stepping 1/64 of the shortest period, watching both a sign
+//! change of g = x - Delta and a maximum of g reaching the stop (no grazing impact is missed),
+//! then Brent. For short times g(t)/t is summed as a Taylor series (each body's series about the
+//! impact), so tiny flights keep their digits.
+
+use super::brent::brent;
+use super::{Failure, Outcome, Regime, Sum};
+
+/// Two bodies, f64, SI units.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TwoBodies {
+    /// Masses (kg).
+    pub m: [f64; 2],
+    /// Stiffnesses (N/m).
+    pub c: [f64; 2],
+    /// Damping coefficients (N s/m).
+    pub d: [f64; 2],
+    /// Contact at x1 - x2 = Delta (m): gap > 0, preload < 0.
+    pub delta: f64,
+    /// R.
+    pub restitution: f64,
+    /// Closing speed of body 1 relative to body 2 at the first impact (m/s).
+    pub closing_speed: f64,
+    /// Body 2's position and velocity at the first impact (body 1 is at x2 + Delta).
+    pub x2: f64,
+    /// Body 2's velocity at the first impact (m/s).
+    pub v2: f64,
+    /// P_end (m/s), if any.
+    pub threshold: Option<f64>,
+}
+
+/// (x, v) of x'' + 2 zeta w x' + w^2 x = 0 after time t from (x0, v0).
+fn evolve(w: f64, zeta: f64, x0: f64, v0: f64, t: f64) -> (f64, f64) {
+    if zeta < 1.0 {
+        let a = zeta * w;
+        let wd = w * (1.0 - zeta * zeta).sqrt();
+        let (s, c) = (wd * t).sin_cos();
+        let e = (-a * t).exp();
+        let b = (v0 + a * x0) / wd;
+        (
+            e * (x0 * c + b * s),
+            e * (v0 * c - (a * v0 + w * w * x0) / wd * s),
+        )
+    } else if zeta == 1.0 {
+        let e = (-w * t).exp();
+        (
+            e * (x0 + (v0 + w * x0) * t),
+            e * (v0 - w * (v0 + w * x0) * t),
+        )
+    } else {
+        let root = (zeta * zeta - 1.0).sqrt();
+        let slow = -w / (zeta + root);
+        let fast = -w * (zeta + root);
+        let p = (v0 - fast * x0) / (slow - fast);
+        let q = x0 - p;
+        let (es, ef) = ((slow * t).exp(), (fast * t).exp());
+        (p * es + q * ef, slow * p * es + fast * q * ef)
+    }
+}
+
+/// Taylor coefficients c_0..c_n of x(t) for x'' + b x' + k x = 0 from (x0, v0).
+fn series(b: f64, k: f64, x0: f64, v0: f64, out: &mut [f64]) {
+    if out.len() < 2 {
+        return;
+    }
+    out[0] = x0;
+    out[1] = v0;
+    for n in 0..out.len() - 2 {
+        #[allow(clippy::cast_precision_loss)]
+        let nf = n as f64;
+        out[n + 2] = -(b * (nf + 1.0) * out[n + 1] + k * out[n]) / ((nf + 2.0) * (nf + 1.0));
+    }
+}
+
+const TERMS: usize = 60;
+
+#[derive(Debug, Clone, Copy)]
+struct Body {
+    w: f64,
+    zeta: f64,
+}
+
+impl TwoBodies {
+    fn bodies(&self) -> [Body; 2] {
+        let body = |i: usize| {
+            let w = (self.c[i] / self.m[i]).sqrt();
+            Body {
+                w,
+                zeta: self.d[i] / (2.0 * (self.c[i] * self.m[i]).sqrt()),
+            }
+        };
+        [body(0), body(1)]
+    }
+
+    /// The Rayleigh frequency of the relative motion (the scale of the Zeno tail).
+    fn omega_rel(&self) -> f64 {
+        let [m1, m2] = self.m;
+        ((self.c[0] * m2 / m1 + self.c[1] * m1 / m2) / (m1 + m2)).sqrt()
+    }
+}
+
+/// A free flight from state (x1, v1, x2, v2) at g = x1 - x2 - Delta = 0.
+struct Free<'a> {
+    s: &'a TwoBodies,
+    b: [Body; 2],
+    state: [f64; 4],
+    /// Taylor coefficients of g(t) = x1 - x2 - Delta (c_0 = 0).
+    g: [f64; TERMS],
+    shortest: f64,
+}
+
+impl<'a> Free<'a> {
+    fn new(s: &'a TwoBodies, state: [f64; 4]) -> Self {
+        let b = s.bodies();
+        let (mut a1, mut a2) = ([0.0; TERMS], [0.0; TERMS]);
+        series(
+            2.0 * b[0].zeta * b[0].w,
+            b[0].w * b[0].w,
+            state[0],
+            state[1],
+            &mut a1,
+        );
+        series(
+            2.0 * b[1].zeta * b[1].w,
+            b[1].w * b[1].w,
+            state[2],
+            state[3],
+            &mut a2,
+        );
+        let mut g = [0.0; TERMS];
+        for k in 0..TERMS {
+            g[k] = a1[k] - a2[k];
+        }
+        g[0] = 0.0; // x1 - x2 = Delta exactly at the start
+        let shortest = 2.0 * std::f64::consts::PI / b[0].w.max(b[1].w);
+        Self {
+            s,
+            b,
+            state,
+            g,
+            shortest,
+        }
+    }
+
+    /// (g(t)/t, g'(t)) for t > 0.
+    fn eval(&self, t: f64) -> (f64, f64) {
+        let wmax = self.b[0].w.max(self.b[1].w) * (1.0 + self.b[0].zeta.max(self.b[1].zeta));
+        if wmax * t <= 1.0 {
+            let (mut over_t, mut slope, mut p) = (0.0, 0.0, 1.0);
+            for k in 1..TERMS {
+                #[allow(clippy::cast_precision_loss)]
+                let kf = k as f64;
+                over_t += self.g[k] * p;
+                slope += kf * self.g[k] * p;
+                p *= t;
+            }
+            (over_t, slope)
+        } else {
+            let (x1, v1) = evolve(self.b[0].w, self.b[0].zeta, self.state[0], self.state[1], t);
+            let (x2, v2) = evolve(self.b[1].w, self.b[1].zeta, self.state[2], self.state[3], t);
+            ((x1 - x2 - self.s.delta) / t, v1 - v2)
+        }
+    }
+
+    fn at(&self, t: f64) -> [f64; 4] {
+        let (x1, v1) = evolve(self.b[0].w, self.b[0].zeta, self.state[0], self.state[1], t);
+        let (x2, v2) = evolve(self.b[1].w, self.b[1].zeta, self.state[2], self.state[3], t);
+        [x1, v1, x2, v2]
+    }
+
+    /// Largest possible |x1| + |x2| from time t on (amplitude envelopes), for a gap's end.
+    fn reach(&self, t: f64) -> f64 {
+        let mut total = 0.0;
+        for (i, b) in self.b.iter().enumerate() {
+            let (x, v) = (self.state[2 * i], self.state[2 * i + 1]);
+            let amp = if b.zeta < 1.0 {
+                let wd = b.w * (1.0 - b.zeta * b.zeta).sqrt();
+                let k = (v + b.zeta * b.w * x) / wd;
+                (x * x + k * k).sqrt() * (-b.zeta * b.w * t).exp() / (1.0 - b.zeta * b.zeta).sqrt()
+            } else {
+                // Over-damped: bounded by its start plus the distance its speed can carry it.
+                x.abs() + v.abs() / b.w
+            };
+            total += amp;
+        }
+        total
+    }
+
+    /// The next impact time after the start, or `None` if there is none.
+    fn next_impact(&self, horizon_steps: u64) -> Result<Option<f64>, Failure> {
+        let h = self.shortest / 64.0;
+        let (mut t_prev, mut prev): (f64, (f64, f64)) = (0.0, (self.g[1], self.g[1]));
+        for k in 1..=horizon_steps {
+            #[allow(clippy::cast_precision_loss)]
+            let t = k as f64 * h;
+            let now = self.eval(t);
+            if now.0 >= 0.0 {
+                return Ok(brent(
+                    |s| self.eval(s).0,
+                    t_prev.max(f64::MIN_POSITIVE),
+                    t,
+                    0.0,
+                ));
+            }
+            if prev.1 > 0.0 && now.1 <= 0.0 {
+                // A maximum of g in between: does it reach the stop?
+                if let Some(peak) = brent(|s| self.eval(s).1, t_prev.max(f64::MIN_POSITIVE), t, 0.0)
+                {
+                    if self.eval(peak).0 >= 0.0 {
+                        return Ok(brent(
+                            |s| self.eval(s).0,
+                            t_prev.max(f64::MIN_POSITIVE),
+                            peak,
+                            0.0,
+                        ));
+                    }
+                }
+            }
+            if self.s.delta > 0.0 && self.reach(t) < self.s.delta {
+                return Ok(None);
+            }
+            if self.s.delta >= 0.0
+                && self.b.iter().all(|b| b.zeta >= 1.0)
+                && t > 50.0 * self.shortest
+            {
+                return Ok(None);
+            }
+            t_prev = t;
+            prev = now;
+        }
+        Err(Failure::Budget(horizon_steps))
+    }
+}
+
+/// When the stuck pair separates (the contact force turns tensile), if ever.
+fn separation(s: &TwoBodies, x2: f64, v: f64) -> Result<Option<f64>, Failure> {
+    let [m1, m2] = s.m;
+    let big_m = m1 + m2;
+    let stiff = s.c[0] + s.c[1];
+    let damp = s.d[0] + s.d[1];
+    let w = (stiff / big_m).sqrt();
+    let zeta = damp / (2.0 * (stiff * big_m).sqrt());
+    let x_eq = -s.c[0] * s.delta / stiff;
+    // N = -c1 x1 - d1 v - m1 a, with x1 = x2 + Delta and a the pair's acceleration.
+    let force = |t: f64| {
+        let (u, vv) = evolve(w, zeta, x2 - x_eq, v, t);
+        let x = u + x_eq;
+        let a = -(stiff * x + s.c[0] * s.delta + damp * vv) / big_m;
+        -s.c[0] * (x + s.delta) - s.d[0] * vv - m1 * a
+    };
+    let n_eq = -s.c[0] * s.c[1] * s.delta / stiff;
+    // |N - N_eq| <= (c1 + d1 w + m1 w^2 (1 + 2 zeta)) * amplitude(t): beyond that bound, never.
+    let (u0, v0) = (x2 - x_eq, v);
+    let amp0 = if zeta < 1.0 {
+        let wd = w * (1.0 - zeta * zeta).sqrt();
+        let k = (v0 + zeta * w * u0) / wd;
+        (u0 * u0 + k * k).sqrt() / (1.0 - zeta * zeta).sqrt()
+    } else {
+        u0.abs() + v0.abs() / w
+    };
+    let gain = s.c[0] + s.d[0] * w + m1 * w * w * (1.0 + 2.0 * zeta);
+    let h = 2.0 * std::f64::consts::PI / w / 64.0;
+    if force(0.0) < 0.0 {
+        return Ok(Some(0.0));
+    }
+    for k in 1..=4_000_000_u64 {
+        #[allow(clippy::cast_precision_loss)]
+        let t = k as f64 * h;
+        let bound = gain * amp0 * (-zeta * w * t).exp();
+        if n_eq > 0.0 && bound < n_eq {
+            return Ok(None);
+        }
+        if zeta == 0.0 && k > 64 * 8 {
+            // Undamped: periodic; eight periods without separation means never.
+            return Ok(None);
+        }
+        if force(t) < 0.0 {
+            #[allow(clippy::cast_precision_loss)]
+            let t_prev = (k - 1) as f64 * h;
+            return Ok(brent(&force, t_prev, t, 0.0));
+        }
+    }
+    Err(Failure::Budget(4_000_000))
+}
+
+/// Simulates two bodies exactly.
+///
+/// # Errors
+/// [`Failure::Invalid`] for parameters outside the model, [`Failure::NeedsThreshold`] when the
+/// impacts never end and no threshold is given, [`Failure::Budget`] past `budget` impacts.
+#[allow(clippy::too_many_lines)]
+pub fn simulate(s: &TwoBodies, budget: u64) -> Result<Outcome, Failure> {
+    let positive = |x: f64| x.is_finite() && x > 0.0;
+    if !(s.m.iter().all(|m| positive(*m)) && s.c.iter().all(|c| positive(*c))) {
+        return Err(Failure::Invalid("two_body"));
+    }
+    if !s.d.iter().all(|d| d.is_finite() && *d >= 0.0) {
+        return Err(Failure::Invalid("two_body.d"));
+    }
+    if !(s.restitution > 0.0
+        && s.restitution <= 1.0
+        && positive(s.closing_speed)
+        && s.delta.is_finite())
+    {
+        return Err(Failure::Invalid("scene"));
+    }
+    let undamped = s.d.iter().all(|d| *d == 0.0);
+    // The regimes of physics.md sec. 4, for the relative motion.
+    let regime = if s.restitution == 1.0 && undamped {
+        Regime::Periodic
+    } else if s.delta < 0.0 && s.restitution < 1.0 {
+        Regime::ZenoAccumulation
+    } else if s.delta > 0.0 && !undamped {
+        Regime::LastImpact
+    } else {
+        Regime::Endless
+    };
+    if regime == Regime::Endless && s.threshold.is_none() {
+        return Err(Failure::NeedsThreshold);
+    }
+    let r = s.restitution;
+    let [m1, m2] = s.m;
+    let big_m = m1 + m2;
+    let mut state = [s.x2 + s.delta, s.v2 + s.closing_speed, s.x2, s.v2];
+    let mut time = Sum::default();
+    let mut first = Vec::new();
+    let mut impacts: u64 = 0;
+    let (mut last_above, mut count_above, mut ever_infinite) = (0.0, 0_u64, false);
+    let tail = super::one_body::ZENO_TAIL * s.omega_rel() * s.delta.abs();
+    let mut separations = 0;
+    loop {
+        // An impact now, relative speed u = v1 - v2 > 0.
+        let u = state[1] - state[3];
+        let p = (1.0 + r) * u;
+        impacts += 1;
+        if first.len() < 5 {
+            first.push((time.value(), p));
+        }
+        if s.threshold.is_none_or(|end| p >= end) {
+            last_above = time.value();
+            count_above = impacts;
+        } else if regime == Regime::Endless {
+            // A decay without an end of its own: all later impacts are below too.
+            return Ok(Outcome {
+                regime,
+                end_time: None,
+                impacts_total: None,
+                last_above_time: Some(last_above),
+                impacts_above: Some(count_above),
+                first_impacts: first,
+            });
+        }
+        if regime == Regime::Periodic && impacts >= 5 {
+            // No loss at all: the impacts go on as they are (their pattern may be
+            // quasi-periodic with unequal frequencies, but their impulses never decay).
+            let all_above = s.threshold.is_none_or(|end| p >= end);
+            return Ok(Outcome {
+                regime,
+                end_time: None,
+                impacts_total: None,
+                last_above_time: if all_above { None } else { Some(last_above) },
+                impacts_above: if all_above { None } else { Some(count_above) },
+                first_impacts: first,
+            });
+        }
+        if impacts > budget {
+            return Err(Failure::Budget(budget));
+        }
+        state[1] -= (1.0 + r) * m2 / big_m * u;
+        state[3] += (1.0 + r) * m1 / big_m * u;
+        let departure = r * u;
+        let flight = Free::new(s, state);
+        if s.delta < 0.0 && r < 1.0 && departure < tail && flight.g[2] > 0.0 {
+            // Zeno: flights ~ a / g2 shrinking by R; sum them and stick.
+            let t_f = departure / flight.g[2];
+            let t_stick = time.value() + t_f / (1.0 - r);
+            ever_infinite = true;
+            let v = (m1 * state[1] + m2 * state[3]) / big_m;
+            match separation(s, state[2], v)? {
+                None => {
+                    return Ok(Outcome {
+                        regime,
+                        end_time: Some(t_stick),
+                        impacts_total: None,
+                        last_above_time: Some(if s.threshold.is_some() {
+                            last_above
+                        } else {
+                            t_stick
+                        }),
+                        impacts_above: if s.threshold.is_some() {
+                            Some(count_above)
+                        } else {
+                            None
+                        },
+                        first_impacts: first,
+                    })
+                }
+                Some(dt) => {
+                    separations += 1;
+                    if separations > 10_000 {
+                        return Err(Failure::Budget(10_000));
+                    }
+                    // Separate with no relative velocity, then fly to the next impact.
+                    let (x2, v2) = {
+                        let stiff = s.c[0] + s.c[1];
+                        let damp = s.d[0] + s.d[1];
+                        let w = (stiff / big_m).sqrt();
+                        let zeta = damp / (2.0 * (stiff * big_m).sqrt());
+                        let x_eq = -s.c[0] * s.delta / stiff;
+                        let (u2, v2) = evolve(w, zeta, state[2] - x_eq, v, dt);
+                        (u2 + x_eq, v2)
+                    };
+                    time.add(t_stick - time.value() + dt);
+                    let apart = Free::new(s, [x2 + s.delta, v2, x2, v2]);
+                    match apart.next_impact(400_000_000)? {
+                        None => unreachable!("a preload always closes again"),
+                        Some(t) => {
+                            state = apart.at(t);
+                            time.add(t);
+                        }
+                    }
+                    continue;
+                }
+            }
+        }
+        match flight.next_impact(400_000_000)? {
+            None => {
+                return Ok(Outcome {
+                    regime,
+                    end_time: Some(time.value()),
+                    impacts_total: if ever_infinite { None } else { Some(impacts) },
+                    last_above_time: Some(last_above),
+                    impacts_above: Some(count_above),
+                    first_impacts: first,
+                });
+            }
+            Some(t) => {
+                state = flight.at(t);
+                time.add(t);
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::reference::{simulate as one, OneBody, DEFAULT_BUDGET};
+
+    fn pair(m: [f64; 2], c: [f64; 2], d: [f64; 2], delta: f64, r: f64, v0: f64) -> TwoBodies {
+        TwoBodies {
+            m,
+            c,
+            d,
+            delta,
+            restitution: r,
+            closing_speed: v0,
+            x2: 0.0,
+            v2: 0.0,
+            threshold: None,
+        }
+    }
+
+    #[test]
+    fn equal_partial_frequencies_reproduce_the_one_body_result() {
+        // c/m = 1e6 (Omega = 1000), d/m = 40 (zeta = 0.02): the relative motion is exactly the
+        // one-body model, whatever the mass ratio and the centre of mass does.
+        for (delta, r, v0, x2, v2) in [
+            (-1e-3, 0.6, 0.3, 0.0, 0.0),
+            (-1e-3, 0.3, 1.0, 2e-4, -0.1),
+            (1e-3, 0.9, 3.0, 0.0, 0.05),
+        ] {
+            let two = TwoBodies {
+                x2,
+                v2,
+                ..pair([1e-3, 3e-3], [1e3, 3e3], [0.04, 0.12], delta, r, v0)
+            };
+            let a = simulate(&two, DEFAULT_BUDGET).unwrap();
+            let b = one(
+                &OneBody {
+                    omega: 1000.0,
+                    delta,
+                    restitution: r,
+                    zeta: 0.02,
+                    closing_speed: v0,
+                    threshold: None,
+                },
+                DEFAULT_BUDGET,
+            )
+            .unwrap();
+            let (ta, tb) = (a.end_time.unwrap(), b.end_time.unwrap());
+            assert!(
+                (ta / tb - 1.0).abs() < 1e-6,
+                "{delta} {r}: two {ta} vs one {tb}"
+            );
+            assert_eq!(a.impacts_total, b.impacts_total);
+            for (x, y) in a.first_impacts.iter().zip(&b.first_impacts) {
+                assert!(
+                    (x.0 - y.0).abs() <= 1e-9 * tb && (x.1 / y.1 - 1.0).abs() < 1e-8,
+                    "{x:?} vs {y:?}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn the_stuck_pair_separates_only_when_the_contact_force_turns_tensile() {
+        // Equal partial frequencies: N = mu Omega^2 |Delta| constant, never tensile.
+        let equal = pair([1e-3, 3e-3], [1e3, 3e3], [0.04, 0.12], -1e-3, 0.5, 0.3);
+        assert_eq!(separation(&equal, 5e-4, 0.2).unwrap(), None);
+        // A stiff light body on a soft heavy one, stuck 1 mm below equilibrium with a light
+        // preload: compressive at first (N = 9.2 N), the pair's swing to the other side pulls
+        // the contact apart within a period. (At +1 mm it is tensile at once: N = -9 N.)
+        let unequal = pair([1e-3, 1e-2], [1e4, 1e2], [0.0, 0.0], -1e-5, 0.5, 0.3);
+        assert_eq!(separation(&unequal, 1e-3, 0.0).unwrap(), Some(0.0));
+        let t = separation(&unequal, -1e-3, 0.0)
+            .unwrap()
+            .expect("separates");
+        let period = 2.0 * std::f64::consts::PI / ((1e4 + 1e2) / 1.1e-2_f64).sqrt();
+        assert!(t > 0.0 && t < period, "{t} vs period {period}");
+    }
+
+    #[test]
+    fn unequal_frequencies_can_reopen_a_stuck_contact() {
+        // A stiff light body against a soft heavy one, preloaded lightly: the stuck pair
+        // oscillates, the contact force turns tensile and the contact reopens.
+        let two = pair([1e-3, 1e-2], [1e4, 1e2], [1e-3, 1e-2], -1e-5, 0.5, 0.5);
+        let out = simulate(&two, DEFAULT_BUDGET).unwrap();
+        assert_eq!(out.regime, Regime::ZenoAccumulation);
+        assert!(out.end_time.unwrap() > 0.0);
+    }
+}
