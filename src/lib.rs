@@ -26,6 +26,7 @@ mod accuracy;
 mod averaged;
 pub mod catalogue;
 mod closed;
+mod debounce;
 mod error;
 mod float;
 mod map;
@@ -40,6 +41,7 @@ mod window;
 
 pub use averaged::{Averaged, Bodies, EnvelopePoint, Motion};
 pub use closed::Estimate;
+pub use debounce::{Debouncer, Edge, Mode, Polarity, State, Windows};
 pub use error::{Error, Parameter, Reason, PHYSICAL_RANGE};
 pub use float::Float;
 pub use map::{Impact, MapEnd, MapImpacts, DEFAULT_MAX_IMPACTS};

@@ -122,8 +122,17 @@ pub const DEFAULT_BUDGET: u64 = 50_000_000;
 /// # Errors
 /// [`Failure::Invalid`] for parameters outside the model, [`Failure::NeedsThreshold`] for an
 /// endless regime without a threshold, [`Failure::Budget`] past `budget` impacts.
-#[allow(clippy::too_many_lines)]
 pub fn simulate(scene: &OneBody, budget: u64) -> Result<Outcome, Failure> {
+    simulate_observed(scene, budget, |_, _| {})
+}
+
+/// [`simulate`], calling `on_impact(time, impulse)` at every impact it resolves (impact 0
+/// first; not the impacts of a summed Zeno tail), e.g. to record a bounce trace.
+///
+/// # Errors
+/// As [`simulate`].
+#[allow(clippy::too_many_lines)]
+pub fn simulate_observed(scene: &OneBody, budget: u64, mut on_impact: impl FnMut(f64, f64)) -> Result<Outcome, Failure> {
     let OneBody {
         omega,
         delta,
@@ -169,6 +178,7 @@ pub fn simulate(scene: &OneBody, budget: u64) -> Result<Outcome, Failure> {
     let impulse = |v: f64| (1.0 + restitution) * v;
     let above = |p: f64| threshold.is_none_or(|end| p >= end);
     let mut first = vec![(0.0, impulse(closing_speed))];
+    on_impact(0.0, impulse(closing_speed));
     let mut time = Sum::default();
     let mut speed = closing_speed;
     let mut impacts: u64 = 1;
@@ -229,6 +239,7 @@ pub fn simulate(scene: &OneBody, budget: u64) -> Result<Outcome, Failure> {
                 speed = returned;
                 impacts += 1;
                 let p = impulse(speed);
+                on_impact(time.value(), p);
                 if first.len() < 5 {
                     first.push((time.value(), p));
                 }
