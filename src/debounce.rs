@@ -70,7 +70,11 @@ impl Windows {
         if press > Self::MAX_TICKS || release > Self::MAX_TICKS {
             return Err(Error::new(Parameter::Time, Reason::OutOfRange));
         }
-        Ok(Self { press, release, mode })
+        Ok(Self {
+            press,
+            release,
+            mode,
+        })
     }
 
     /// From two [`Window`]s (see [`Window::from_prediction`]).
@@ -79,7 +83,9 @@ impl Windows {
     /// [`Parameter::Time`] with [`Reason::OutOfRange`] when a window exceeds
     /// [`Windows::MAX_TICKS`] samples: sample less often.
     pub fn from_windows(press: Window, release: Window, mode: Mode) -> Result<Self, Error> {
-        let narrow = |w: Window| u16::try_from(w.ticks()).map_err(|_| Error::new(Parameter::Time, Reason::OutOfRange));
+        let narrow = |w: Window| {
+            u16::try_from(w.ticks()).map_err(|_| Error::new(Parameter::Time, Reason::OutOfRange))
+        };
         Self::new(narrow(press)?, narrow(release)?, mode)
     }
 
@@ -211,7 +217,12 @@ impl<P: InputPin> Debouncer<P> {
     /// The pin's error.
     pub fn new(mut pin: P, windows: Windows, polarity: Polarity) -> Result<Self, P::Error> {
         let closed = Self::read(&mut pin, polarity)?;
-        Ok(Self { pin, windows, polarity, state: State::new(closed) })
+        Ok(Self {
+            pin,
+            windows,
+            polarity,
+            state: State::new(closed),
+        })
     }
 
     fn read(pin: &mut P, polarity: Polarity) -> Result<bool, P::Error> {
@@ -276,7 +287,9 @@ mod tests {
     #[test]
     fn confirm_needs_the_whole_window() {
         let w = Windows::new(4, 2, Mode::Confirm).unwrap_or_else(|_| unreachable!());
-        let samples = [true, true, true, false, true, true, true, true, false, true, false, false];
+        let samples = [
+            true, true, true, false, true, true, true, true, false, true, false, false,
+        ];
         let (state, edges) = run(w, &samples);
         // Press at the 4th consecutive closed sample (index 7), release after 2 open (11).
         assert_eq!(edges[7], Some(Edge::Press));
@@ -304,7 +317,10 @@ mod tests {
     #[test]
     fn windows_are_checked() {
         assert!(Windows::new(Windows::MAX_TICKS, 0, Mode::Confirm).is_ok());
-        assert_eq!(Windows::new(Windows::MAX_TICKS + 1, 0, Mode::Confirm), Err(Error::new(Parameter::Time, Reason::OutOfRange)));
+        assert_eq!(
+            Windows::new(Windows::MAX_TICKS + 1, 0, Mode::Confirm),
+            Err(Error::new(Parameter::Time, Reason::OutOfRange))
+        );
         let big = Window::from_ticks(40_000);
         assert!(Windows::from_windows(big, Window::from_ticks(1), Mode::HoldOff).is_err());
     }

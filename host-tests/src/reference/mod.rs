@@ -132,7 +132,11 @@ pub fn simulate(scene: &OneBody, budget: u64) -> Result<Outcome, Failure> {
 /// # Errors
 /// As [`simulate`].
 #[allow(clippy::too_many_lines)]
-pub fn simulate_observed(scene: &OneBody, budget: u64, mut on_impact: impl FnMut(f64, f64)) -> Result<Outcome, Failure> {
+pub fn simulate_observed(
+    scene: &OneBody,
+    budget: u64,
+    mut on_impact: impl FnMut(f64, f64),
+) -> Result<Outcome, Failure> {
     let OneBody {
         omega,
         delta,
