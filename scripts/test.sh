@@ -50,6 +50,12 @@ done
 step "firmware size report (fails if restitution-only firmware links a sine)"
 scripts/size-report.sh
 
+step "firmware under QEMU prints the host's lines (thumbv6m, thumbv7m, thumbv7em)"
+scripts/firmware.sh
+
+step "firmware on the Arduino Uno (simavr) prints the host's lines"
+scripts/uno.sh
+
 step "generated tables are current"
 # (the committed files are the generators' output as rustfmt leaves it)
 python3 scripts/gauss_legendre.py | rustfmt --edition 2021 | diff - src/quadrature/table.rs

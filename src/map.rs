@@ -93,6 +93,19 @@ impl<'a, F: Float, D: Dissipation<F>> MapImpacts<'a, F, D> {
     pub const fn end(&self) -> Option<MapEnd<F>> {
         self.end
     }
+
+    /// Once the impacts stopped in a Zeno tail: the tail's duration (s), summed in closed form
+    /// on the small-impulse asymptote, as the map's prediction does. The accumulation time is
+    /// the last impact's time plus this. Small: no averaged model is linked.
+    #[must_use]
+    pub fn zeno_tail_time(&self) -> Option<F> {
+        match self.end {
+            Some(MapEnd::ZenoTail(j)) => {
+                asymptotic_time(self.scene.asymptote(), j, F::ZERO).seconds()
+            }
+            _ => None,
+        }
+    }
 }
 
 impl<F: Float, D: Dissipation<F>> Iterator for MapImpacts<'_, F, D> {

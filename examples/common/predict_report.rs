@@ -1,7 +1,9 @@
 // The lines `examples/predict.rs` prints, the same on the host and on every target: integers
 // only (formatting floats would pull ~30 KB of core::fmt into the firmware).
 
-use contact_bounce::{catalogue, window_ticks, Float, Margin, Method, Nodes, Tolerance, Window, DEFAULT_MAX_IMPACTS};
+use contact_bounce::{
+    catalogue, window_ticks, Float, Margin, Method, Nodes, Tolerance, Window, DEFAULT_MAX_IMPACTS,
+};
 use core::fmt::Write;
 
 /// The tactile dome's window at compile time: t_b1 widened by its worst atan error (8 % at
@@ -15,7 +17,12 @@ const DOME_TICKS: u32 = match contact_bounce::preload_bounce_time(5e-5, 5000.0, 
 };
 
 pub fn run(out: &mut impl Write) -> core::fmt::Result {
-    let switches = [catalogue::REED, catalogue::TACTILE_DOME, catalogue::SIGNAL_RELAY, catalogue::CONTACTOR];
+    let switches = [
+        catalogue::REED,
+        catalogue::TACTILE_DOME,
+        catalogue::SIGNAL_RELAY,
+        catalogue::CONTACTOR,
+    ];
     for switch in switches {
         let Ok(scene) = switch.scene::<f32>() else {
             writeln!(out, "{}: invalid", switch.name)?;
@@ -23,7 +30,12 @@ pub fn run(out: &mut impl Write) -> core::fmt::Result {
         };
         let auto = Tolerance::new(0.1f32).map(Method::Auto);
         for (tag, method) in [
-            ("map", Ok(Method::Map { max_impacts: DEFAULT_MAX_IMPACTS })),
+            (
+                "map",
+                Ok(Method::Map {
+                    max_impacts: DEFAULT_MAX_IMPACTS,
+                }),
+            ),
             ("averaged", Ok(Method::Averaged(Nodes::N8))),
             ("auto", auto),
         ] {
@@ -33,7 +45,11 @@ pub fn run(out: &mut impl Write) -> core::fmt::Result {
             let margin = Margin::none().with_expected_error(&p);
             let ticks = Window::from_prediction(&p, &margin, 10e-6).map(|w| w.ticks());
             match (nanoseconds, ticks) {
-                (Some(ns), Ok(ticks)) => writeln!(out, "{} {tag}: bounce {ns} ns, window {ticks} x 10 us", switch.name)?,
+                (Some(ns), Ok(ticks)) => writeln!(
+                    out,
+                    "{} {tag}: bounce {ns} ns, window {ticks} x 10 us",
+                    switch.name
+                )?,
                 _ => writeln!(out, "{} {tag}: no finite window", switch.name)?,
             }
         }

@@ -4,7 +4,9 @@
 #[allow(dead_code)]
 mod data;
 
-use contact_bounce::{catalogue, Debouncer, Margin, Method, Mode, Polarity, Tolerance, Window, Windows};
+use contact_bounce::{
+    catalogue, Debouncer, Margin, Method, Mode, Polarity, Tolerance, Window, Windows,
+};
 use core::convert::Infallible;
 use core::fmt::Write;
 use embedded_hal::digital::{ErrorType, InputPin};
@@ -61,7 +63,11 @@ pub fn run(out: &mut impl Write) -> core::fmt::Result {
     for (label, ticks, mode) in [
         ("physics confirm", window, Mode::Confirm),
         ("physics hold-off", window, Mode::HoldOff),
-        ("fixed 0.2 ms hold-off", Window::from_ticks(20), Mode::HoldOff),
+        (
+            "fixed 0.2 ms hold-off",
+            Window::from_ticks(20),
+            Mode::HoldOff,
+        ),
     ] {
         match Windows::from_windows(ticks, ticks, mode) {
             Ok(windows) => run_one(out, label, windows)?,

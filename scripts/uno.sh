@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Builds examples/uno.rs for the Arduino Uno (nightly, avr-none, -Zbuild-std=core, linked by
+# avr-gcc), runs it in simavr and checks it prints what the same example prints on the host.
+# Installs gcc-avr, avr-libc and simavr if missing (Debian) and rust-src for the nightly.
+# Without a nightly toolchain (none can be fetched on some machines) it says SKIPPED loudly.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+if ! rustup toolchain list | grep -q '^nightly'; then
+  if ! rustup toolchain install nightly --profile minimal >/dev/null 2>&1; then
+    echo "SKIPPED: the Uno check needs a nightly toolchain, and none is installed or installable here" >&2
+    exit 0
+  fi
+fi
+rustup component add rust-src --toolchain nightly >/dev/null
+if ! command -v simavr >/dev/null || ! command -v avr-gcc >/dev/null; then
+  apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends gcc-avr avr-libc simavr >/dev/null
+fi
+
+cargo +nightly build --quiet --release --example uno --target avr-none -Zbuild-std=core
+elf=target/avr-none/release/examples/uno.elf
+avr-size "$elf"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cargo run --quiet --example uno > "$tmp/host"
+# simavr prints the UART in colour, one line at a time ending in '.', then its own lines; it
+# never stops on a bad opcode, hence the timeout.
+timeout 120 simavr -m atmega328p -f 16000000 "$elf" > "$tmp/raw" 2>&1 || true
+sed -e 's/\x1b\[[0-9;]*m//g' "$tmp/raw" | grep -v -e '^Loaded ' -e '^$' | sed -e 's/\.$//' > "$tmp/uno"
+if grep -q PANIC "$tmp/uno" || ! diff -u "$tmp/host" "$tmp/uno"; then
+  echo "FAIL: the Uno printed other lines than the host" >&2
+  exit 1
+fi
+echo "ok: uno in simavr ($(wc -l < "$tmp/host") lines, as on the host)"
