@@ -80,5 +80,5 @@ fn main() {
     if report::run(&mut out).is_err() {
         std::process::exit(1);
     }
-    print!("{out}done\n");
+    println!("{out}done");
 }
