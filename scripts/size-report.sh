@@ -20,7 +20,7 @@ report=$(mktemp)
 } > "$report"
 failed=0
 for target in "${targets[@]}"; do
-  cargo build --quiet --release --target "$target" --examples
+  cargo build --quiet --release --target "$target" $(printf -- '--example %s ' "${examples[@]}")
   for example in "${examples[@]}"; do
     elf="target/$target/release/examples/$example"
     read -r text data bss _ < <("$size" "$elf" | tail -n 1)

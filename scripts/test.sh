@@ -47,14 +47,26 @@ for target in "${targets[@]}"; do
   done
 done
 
-step "firmware size report (fails if restitution-only firmware links a sine)"
-scripts/size-report.sh
+step "firmware size report (fails if restitution-only firmware links a sine; README table current)"
+sizes=$(scripts/size-report.sh)
+echo "$sizes"
+python3 - "$sizes" <<'PY'
+import sys
+rows = [l for l in sys.argv[1].splitlines() if l.startswith("| thumb")]
+readme = open("README.md").read()
+missing = [r for r in rows if r not in readme]
+if missing or not rows:
+    sys.exit("README.md size table differs from scripts/size-report.sh:\n" + "\n".join(missing))
+PY
 
 step "firmware under QEMU prints the host's lines (thumbv6m, thumbv7m, thumbv7em)"
 scripts/firmware.sh
 
 step "firmware on the Arduino Uno (simavr) prints the host's lines"
 scripts/uno.sh
+
+step "cost report runs (instructions on Cortex-M, cycles on the Uno; debouncer no dearer than debouncr)"
+scripts/cost-report.sh > /dev/null
 
 step "generated tables are current"
 # (the committed files are the generators' output as rustfmt leaves it)
