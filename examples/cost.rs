@@ -7,7 +7,9 @@
 
 #[cfg(target_os = "none")]
 mod firmware {
-    use contact_bounce::{catalogue, Method, Mode, Nodes, State, Tolerance, Windows, DEFAULT_MAX_IMPACTS};
+    use contact_bounce::{
+        catalogue, Method, Mode, Nodes, State, Tolerance, Windows, DEFAULT_MAX_IMPACTS,
+    };
     use core::hint::black_box;
     use cortex_m as _;
     use cortex_m_semihosting::debug;
@@ -43,7 +45,9 @@ mod firmware {
                 Method::Closed,
                 Method::Averaged(Nodes::N4),
                 Method::Averaged(Nodes::N8),
-                Method::Map { max_impacts: DEFAULT_MAX_IMPACTS },
+                Method::Map {
+                    max_impacts: DEFAULT_MAX_IMPACTS,
+                },
             ] {
                 black_box(scene.predict(black_box(method)));
                 cost_mark(2);

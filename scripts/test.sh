@@ -75,6 +75,8 @@ python3 scripts/averaged_error_table.py | rustfmt --edition 2021 | diff - src/ac
 
 step "measured tables are current (docs/ and README regenerate identically)"
 cargo run --quiet --release -p host-tests --bin error-table | diff - docs/error-table.md
+cargo run --quiet --release -p host-tests --bin debounce-report | diff - docs/debounce-comparison.md
+cargo run --quiet --release -p host-tests --bin trace-data | rustfmt --edition 2021 | diff - examples/data/relay_press.rs
 table=$(scripts/eval-catalogue.sh)
 python3 - "$table" <<'PY'
 import sys

@@ -22,7 +22,9 @@ pub fn run(mark: extern "C" fn(u8)) {
         let scene = black_box(scene);
         black_box(scene.predict(black_box(Method::Closed)));
         mark(2);
-        black_box(scene.predict(black_box(Method::Map { max_impacts: DEFAULT_MAX_IMPACTS })));
+        black_box(scene.predict(black_box(Method::Map {
+            max_impacts: DEFAULT_MAX_IMPACTS,
+        })));
         mark(3);
     }
     if let Ok(windows) = Windows::new(black_box(12), black_box(12), Mode::Confirm) {
