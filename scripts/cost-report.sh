@@ -41,7 +41,7 @@ declare -A qemu=(
   [thumbv7m-none-eabi]="-cpu cortex-m3 -machine lm3s6965evb"
   [thumbv7em-none-eabihf]="-cpu cortex-m4 -machine mps2-an386"
 )
-examples=(predict debounce_trace cost size_restitution size_viscous size_hereditary)
+examples=(predict debounce_trace cost size_restitution size_viscous size_hereditary size_tier_closed size_tier_averaged size_tier_map size_tier_auto)
 for target in thumbv6m-none-eabi thumbv7m-none-eabi thumbv7em-none-eabihf; do
   cargo build --quiet --release --target "$target" $(printf -- '--example %s ' "${examples[@]}")
   for example in "${examples[@]}"; do
