@@ -86,6 +86,14 @@ for path in ("README.md", "docs/eval-catalogue.md"):
         sys.exit(f"{path}: the eval table differs from scripts/eval-catalogue.sh's output")
 PY
 
+step "the README's bounce-table example is current"
+example=$(cargo run --quiet --release -p bounce-table -- bounce-table/scenes/example.toml)
+python3 - "$example" <<'PY'
+import sys
+if sys.argv[1].strip() not in open("README.md").read():
+    sys.exit("README.md: the bounce-table example differs from the command's output")
+PY
+
 step "main job runs"
 cargo run --quiet --release -p bounce-table > /dev/null
 

@@ -205,7 +205,11 @@ fn core_result<F: Float>(input: &SceneInput, options: &Options) -> Result<Value,
     Ok(out)
 }
 
-fn exact_result(input: &SceneInput) -> Result<Value, FieldError> {
+/// The exact reference's outcome for a scene (one body, two bodies, or one body with a kernel).
+///
+/// # Errors
+/// The field at fault, or the reference's failure (with an empty field).
+pub fn exact_outcome(input: &SceneInput) -> Result<reference::Outcome, FieldError> {
     if input.kernel.is_some() && matches!(input.stiffness, Spring::TwoBody(..)) {
         return Err(FieldError {
             field: "kernel".to_owned(),
@@ -255,6 +259,11 @@ fn exact_result(input: &SceneInput) -> Result<Value, FieldError> {
         };
         reference::simulate(&one, reference::DEFAULT_BUDGET).map_err(failed)?
     };
+    Ok(out)
+}
+
+fn exact_result(input: &SceneInput) -> Result<Value, FieldError> {
+    let out = exact_outcome(input)?;
     let regime = match out.regime {
         reference::Regime::ZenoAccumulation => "zeno_accumulation",
         reference::Regime::LastImpact => "last_impact",

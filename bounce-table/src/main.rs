@@ -1,64 +1,120 @@
-//! `bounce-table`: predicted bounce and debounce windows for the typical switches of
-//! physics.md sec. 7 (the built-in catalogue), with every tier of the model side by side; and
-//! `bounce-table eval`, the JSON Lines interface to the model and the exact reference.
+//! `bounce-table`: debounce windows for switches, from physics.
 //!
-//! Usage: `bounce-table [--sample-period SECONDS]` (default 1e-4 s), or
-//! `bounce-table eval [--method exact|map|averaged|closed|auto] [--tolerance X]
-//! [--precision f32|f64] [--nodes N] < scenes.jsonl`.
-
-mod eval;
-mod scene_input;
+//! ```text
+//! bounce-table [OPTIONS] [SCENE_FILE]      the catalogue of physics.md sec. 7, or your switches
+//! bounce-table eval [OPTIONS] < scenes.jsonl
+//! ```
 
 use std::process::ExitCode;
 
-use contact_bounce::{
-    catalogue, Margin, Method, Nodes, Prediction, Tolerance, Window, DEFAULT_MAX_IMPACTS,
-};
+use bounce_table::analysis::{analyse, Settings};
+use bounce_table::output::{identifier, render, Format};
+use bounce_table::scenes::{catalogue, read, FileError};
+use bounce_table::{eval, plot, scene_input::SceneInput};
 
-fn usage() -> &'static str {
-    "usage: bounce-table [--sample-period SECONDS]\n\
-     \x20      bounce-table eval [--method exact|map|averaged|closed|auto] [--tolerance X]\n\
-     \x20                        [--precision f32|f64] [--nodes N] < scenes.jsonl\n\
-     Prints predicted bounce times and debounce windows for the built-in catalogue of typical\n\
-     switches (physics.md sec. 7). The parameters are typical values, not a datasheet."
+const USAGE: &str = "usage: bounce-table [OPTIONS] [SCENE_FILE]
+       bounce-table eval [--method exact|map|averaged|closed|auto] [--tolerance X]
+                         [--precision f32|f64] [--nodes N] < scenes.jsonl
+
+Prints predicted bounce and debounce windows: for the built-in catalogue of typical switches
+(physics.md sec. 7: assumed values, not a datasheet), or for the switches of SCENE_FILE
+(.toml with [[switch]] tables, .json, or .jsonl; the keys of `eval`, and any number may be a
+tolerance: {min = a, max = b} or {value = x, spread = s}).
+
+Options:
+  --period SECONDS     tick period of the windows (default 1e-4)
+  --format FORMAT      table, markdown, csv, json, c (a header) or rust (constants)
+  --output FILE        write there, completely or not at all (default: standard output)
+  --tolerance X        relative error asked of the model, else the exact reference (0.1)
+  --percentile P       percentile of the Monte Carlo window with tolerances (99.9)
+  --samples N          Monte Carlo samples (4000)
+  --seed S             Monte Carlo seed (1)
+  --threads N          worker threads (all cores)
+  --plot DIR           also write NAME-envelope.svg and NAME-motion.svg for each switch";
+
+struct Options {
+    settings: Settings,
+    format: Format,
+    output: Option<String>,
+    plot: Option<String>,
+    file: Option<String>,
 }
 
-fn parse_args() -> Result<f64, String> {
-    let mut period = 1e-4;
-    let mut args = std::env::args().skip(1);
-    while let Some(arg) = args.next() {
+fn positive(name: &str, value: &str) -> Result<f64, String> {
+    value
+        .parse::<f64>()
+        .ok()
+        .filter(|x| x.is_finite() && *x > 0.0)
+        .ok_or(format!("{name}: '{value}' is not a positive number"))
+}
+
+fn parse(args: &[String]) -> Result<Options, String> {
+    let mut o = Options {
+        settings: Settings::default(),
+        format: Format::Table,
+        output: None,
+        plot: None,
+        file: None,
+    };
+    o.settings.progress = std::io::IsTerminal::is_terminal(&std::io::stderr());
+    let mut it = args.iter();
+    while let Some(arg) = it.next() {
+        let mut value = |name: &str| it.next().cloned().ok_or(format!("{name} needs a value"));
         match arg.as_str() {
-            "--sample-period" => {
-                let value = args
-                    .next()
-                    .ok_or("--sample-period needs a value in seconds")?;
-                period = value
-                    .parse::<f64>()
-                    .ok()
-                    .filter(|p| p.is_finite() && *p > 0.0)
-                    .ok_or_else(|| {
-                        format!("--sample-period: '{value}' is not a positive number of seconds")
-                    })?;
+            "--period" | "--sample-period" => {
+                o.settings.period = positive("--period", &value("--period")?)?
             }
+            "--tolerance" => {
+                o.settings.tolerance = positive("--tolerance", &value("--tolerance")?)?
+            }
+            "--percentile" => {
+                let p = positive("--percentile", &value("--percentile")?)?;
+                if p > 100.0 {
+                    return Err(format!("--percentile: {p} is above 100"));
+                }
+                o.settings.percentile = p;
+            }
+            "--samples" | "--seed" | "--threads" => {
+                let v = value(arg)?;
+                let n = v
+                    .parse::<u64>()
+                    .ok()
+                    .filter(|n| *n > 0 || arg == "--seed")
+                    .ok_or(format!("{arg}: '{v}' is not a whole number above 0"))?;
+                match arg.as_str() {
+                    "--samples" => o.settings.samples = n,
+                    "--seed" => o.settings.seed = n,
+                    _ => o.settings.threads = usize::try_from(n).unwrap_or(1),
+                }
+            }
+            "--format" => {
+                let v = value("--format")?;
+                o.format = Format::parse(&v).ok_or(format!(
+                    "--format: '{v}' is not table, markdown, csv, json, c or rust"
+                ))?;
+            }
+            "--output" => o.output = Some(value("--output")?),
+            "--plot" => o.plot = Some(value("--plot")?),
             "-h" | "--help" => return Err(String::new()),
-            other => return Err(format!("unknown argument '{other}'")),
+            other if other.starts_with('-') => return Err(format!("unknown option '{other}'")),
+            file => {
+                if o.file.replace(file.to_owned()).is_some() {
+                    return Err("give one scene file".to_owned());
+                }
+            }
         }
     }
-    Ok(period)
+    Ok(o)
 }
 
-fn seconds(t: Option<f64>) -> String {
-    match t {
-        None => "endless".to_owned(),
-        Some(t) if t < 1e-3 => format!("{:.3} us", t * 1e6),
-        Some(t) if t < 1.0 => format!("{:.3} ms", t * 1e3),
-        Some(t) => format!("{t:.3} s"),
-    }
-}
-
-fn error(p: &Prediction<f64>) -> String {
-    p.expected_error
-        .map_or_else(|| "unknown".to_owned(), |e| format!("{:.1} %", e * 100.0))
+/// Writes `text` to `path` completely or not at all (a temporary file, then a rename).
+fn write_atomically(path: &str, text: &str) -> std::io::Result<()> {
+    let target = std::path::Path::new(path);
+    let tmp = target.with_extension(format!("tmp-{}", std::process::id()));
+    std::fs::write(&tmp, text)?;
+    std::fs::rename(&tmp, target).inspect_err(|_| {
+        let _ = std::fs::remove_file(&tmp);
+    })
 }
 
 fn main() -> ExitCode {
@@ -67,7 +123,7 @@ fn main() -> ExitCode {
         let options = match eval::options(args.get(1..).unwrap_or_default()) {
             Ok(o) => o,
             Err(message) => {
-                eprintln!("bounce-table: {message}\n{}", usage());
+                eprintln!("bounce-table: {message}\n{USAGE}");
                 return ExitCode::from(2);
             }
         };
@@ -80,68 +136,96 @@ fn main() -> ExitCode {
             }
         };
     }
-    let period = match parse_args() {
-        Ok(p) => p,
+    let options = match parse(&args) {
+        Ok(o) => o,
+        Err(message) if message.is_empty() => {
+            println!("{USAGE}");
+            return ExitCode::SUCCESS;
+        }
         Err(message) => {
-            if !message.is_empty() {
-                eprintln!("bounce-table: {message}");
-            }
-            eprintln!("{}", usage());
-            return if message.is_empty() {
-                ExitCode::SUCCESS
-            } else {
-                ExitCode::from(2)
-            };
+            eprintln!("bounce-table: {message}\n\n{USAGE}");
+            return ExitCode::from(2);
         }
     };
-    println!(
-        "Typical switches of physics.md sec. 7: assumed, typical parameters, not a datasheet."
-    );
-    println!("Bounce = accumulation time of the preloaded contact (impacts above no threshold).");
-    println!(
-        "Window = Auto tier at 10 % tolerance, widened by its expected error, in ticks of {}.",
-        seconds(Some(period))
-    );
-    println!();
-    println!(
-        "{:<22} {:>6} {:>13} {:>13} {:>13} {:>13} {:>10} {:>8}",
-        "switch", "j0", "closed", "averaged N8", "map", "auto 10 %", "expected", "window"
-    );
-    let mut failed = false;
-    let tolerance = Tolerance::new(0.1).ok();
-    for typical in catalogue::ALL {
-        let scene = match typical.scene::<f64>() {
-            Ok(s) => s,
-            Err(e) => {
-                eprintln!("bounce-table: {}: {e}", typical.name);
-                failed = true;
-                continue;
+    let typical = options.file.is_none();
+    let entries = match &options.file {
+        None => catalogue(),
+        Some(path) => match read(path) {
+            Ok(entries) => entries,
+            Err(errors) => {
+                for e in errors {
+                    eprintln!("bounce-table: {e}");
+                }
+                return ExitCode::from(2);
             }
-        };
-        let closed = scene.predict(Method::Closed);
-        let averaged = scene.predict(Method::Averaged(Nodes::N8));
-        let map = scene.predict(Method::Map {
-            max_impacts: DEFAULT_MAX_IMPACTS,
-        });
-        let auto = tolerance.map_or(closed, |t| scene.predict(Method::Auto(t)));
-        let window =
-            Window::from_prediction(&auto, &Margin::none().with_expected_error(&auto), period)
-                .map_or_else(|e| e.to_string(), |w| w.ticks().to_string());
-        println!(
-            "{:<22} {:>6.2} {:>13} {:>13} {:>13} {:>13} {:>10} {:>8}",
-            typical.name,
-            scene.dimensionless_impulse().unwrap_or(f64::NAN),
-            seconds(closed.bounce_time()),
-            seconds(averaged.bounce_time()),
-            seconds(map.bounce_time()),
-            seconds(auto.bounce_time()),
-            error(&auto),
-            window,
-        );
+        },
+    };
+    let source = options
+        .file
+        .clone()
+        .unwrap_or_else(|| "catalogue".to_owned());
+    let mut analyses = Vec::new();
+    let mut failed = false;
+    for (i, entry) in entries.iter().enumerate() {
+        match analyse(&entry.name, &entry.template, &options.settings) {
+            Ok(a) => analyses.push(a),
+            Err(e) => {
+                let err = FileError {
+                    file: source.clone(),
+                    place: format!("entry {} ({})", i + 1, entry.name),
+                    field: e.field,
+                    message: e.message,
+                };
+                eprintln!("bounce-table: {err}");
+                failed = true;
+            }
+        }
     }
     if failed {
-        ExitCode::FAILURE
-    } else {
-        ExitCode::SUCCESS
+        // Nothing is written when any switch failed.
+        return ExitCode::from(2);
     }
+    let text = render(options.format, &analyses, &options.settings, typical);
+    match &options.output {
+        Some(path) => {
+            if let Err(e) = write_atomically(path, &text) {
+                eprintln!("bounce-table: {path}: cannot write it: {e}");
+                return ExitCode::FAILURE;
+            }
+        }
+        None => print!("{text}"),
+    }
+    if let Some(dir) = &options.plot {
+        if let Err(e) = std::fs::create_dir_all(dir) {
+            eprintln!("bounce-table: {dir}: {e}");
+            return ExitCode::FAILURE;
+        }
+        for (entry, a) in entries.iter().zip(&analyses) {
+            let Ok(input) = SceneInput::from_json(entry.template.nominal(), &entry.name) else {
+                continue;
+            };
+            let span = if a.nominal.bounce.is_finite() {
+                1.15 * a.nominal.bounce
+            } else {
+                1e-3
+            };
+            match plot::plots(&input, span) {
+                Ok((envelope, motion)) => {
+                    let stem = identifier(&entry.name).to_lowercase();
+                    for (suffix, svg) in [("envelope", envelope), ("motion", motion)] {
+                        let path = format!("{dir}/{stem}-{suffix}.svg");
+                        if let Err(e) = write_atomically(&path, &svg) {
+                            eprintln!("bounce-table: {path}: {e}");
+                            return ExitCode::FAILURE;
+                        }
+                    }
+                }
+                Err(e) => eprintln!(
+                    "bounce-table: {}: plot: {}: {}",
+                    entry.name, e.field, e.message
+                ),
+            }
+        }
+    }
+    ExitCode::SUCCESS
 }

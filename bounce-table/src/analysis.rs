@@ -1,0 +1,337 @@
+//! What the desk tool computes for one switch: the nominal prediction (the cheapest tier
+//! meeting the tolerance, else the exact reference: this is the host), the window it implies,
+//! and with tolerances a seeded Monte Carlo (parallel) for the window at a percentile and the
+//! sensitivity of the bounce to each toleranced parameter.
+
+use std::sync::atomic::{AtomicU64, Ordering};
+
+use contact_bounce::{Method, Nodes, Prediction, Regime, Tolerance};
+use serde_json::Value;
+
+use crate::eval::exact_outcome;
+use crate::scene_input::{FieldError, SceneInput};
+use crate::spreads::Template;
+
+/// How to analyse.
+#[derive(Debug, Clone, Copy)]
+pub struct Settings {
+    /// Sampling (tick) period of the windows (s).
+    pub period: f64,
+    /// Relative tolerance asked of the model (else the exact reference is used).
+    pub tolerance: f64,
+    /// Percentile of the Monte Carlo windows (e.g. 99.9).
+    pub percentile: f64,
+    /// Monte Carlo samples for scenes with tolerances.
+    pub samples: u64,
+    /// Seed of the Monte Carlo.
+    pub seed: u64,
+    /// Threads (at least 1).
+    pub threads: usize,
+    /// Show a progress bar on stderr for long runs.
+    pub progress: bool,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Self {
+            period: 1e-4,
+            tolerance: 0.1,
+            percentile: 99.9,
+            samples: 4000,
+            seed: 1,
+            threads: std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get),
+            progress: false,
+        }
+    }
+}
+
+/// One bounce estimate: the time, an upper bound (widened by its expected error), and how.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Estimate {
+    /// Bounce time (s): the end, else the last impact above the threshold.
+    pub bounce: f64,
+    /// Bounce time widened by the expected error (the exact reference: the time itself).
+    pub upper: f64,
+    /// The regime.
+    pub regime: String,
+    /// Impacts (above the threshold, or in all), if finite.
+    pub impacts: Option<f64>,
+    /// The tier ("closed (Tb1v)", "averaged N8", "map", "exact reference").
+    pub tier: String,
+    /// Its expected error (0 for the exact reference).
+    pub expected_error: f64,
+}
+
+fn regime_name(r: Regime) -> &'static str {
+    match r {
+        Regime::ZenoAccumulation => "zeno_accumulation",
+        Regime::LastImpact => "last_impact",
+        Regime::Endless => "endless",
+        Regime::Periodic => "periodic",
+        Regime::SingleImpact => "single_impact",
+        _ => "unknown",
+    }
+}
+
+fn tier_name(p: &Prediction<f64>) -> String {
+    match p.tier {
+        contact_bounce::Tier::Averaged(n) => format!("averaged N{}", n.count()),
+        contact_bounce::Tier::Closed(form) => format!("closed ({form:?})"),
+        contact_bounce::Tier::Map => "map".to_owned(),
+        other => format!("{other:?}").to_lowercase(),
+    }
+}
+
+/// The bounce of one concrete scene: the model where it promises `tolerance`, else the exact
+/// reference.
+///
+/// # Errors
+/// The scene's invalid field, or an endless bounce (no threshold time either).
+pub fn estimate(scene: &Value, tolerance: f64) -> Result<Estimate, FieldError> {
+    let input = SceneInput::from_json(scene, "scene")?;
+    let core = input.core::<f64>()?;
+    let t = Tolerance::new(tolerance)?;
+    let p = core.predict(Method::Auto(t));
+    let endless = || FieldError {
+        field: "threshold".to_owned(),
+        message: "the bounce never ends and never drops below a threshold".to_owned(),
+    };
+    if p.promises(t) {
+        let bounce = p.bounce_time().ok_or_else(endless)?;
+        let e = p.expected_error.unwrap_or(0.0);
+        return Ok(Estimate {
+            bounce,
+            upper: bounce * (1.0 + e),
+            regime: regime_name(p.regime).to_owned(),
+            impacts: p.impacts_above.value(),
+            tier: tier_name(&p),
+            expected_error: e,
+        });
+    }
+    let out = exact_outcome(&input)?;
+    let bounce = out.end_time.or(out.last_above_time).ok_or_else(endless)?;
+    let regime = match out.regime {
+        host_tests::reference::Regime::ZenoAccumulation => "zeno_accumulation",
+        host_tests::reference::Regime::LastImpact => "last_impact",
+        host_tests::reference::Regime::Endless => "endless",
+        host_tests::reference::Regime::Periodic => "periodic",
+        host_tests::reference::Regime::SingleImpact => "single_impact",
+    };
+    #[allow(clippy::cast_precision_loss)]
+    let impacts = out.impacts_above.map(|n| n as f64);
+    Ok(Estimate {
+        bounce,
+        upper: bounce,
+        regime: regime.to_owned(),
+        impacts,
+        tier: "exact reference".to_owned(),
+        expected_error: 0.0,
+    })
+}
+
+/// The Monte Carlo over a scene's tolerances.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MonteCarlo {
+    /// Samples drawn.
+    pub samples: u64,
+    /// Median bounce (s).
+    pub p50: f64,
+    /// The window (s): the upper bound at the percentile.
+    pub window: f64,
+    /// The largest upper bound drawn (s).
+    pub max: f64,
+    /// Samples the model gave to the exact reference (it could not promise the tolerance).
+    pub exact: u64,
+}
+
+/// How much each toleranced parameter moves the bounce.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Sensitivity {
+    /// The parameter (a scene key, `kernel.tau` for nested ones).
+    pub parameter: String,
+    /// d ln(bounce) / d ln(parameter) at the nominal scene.
+    pub elasticity: f64,
+    /// |elasticity| times the parameter's relative half-width: its share of the spread.
+    pub contribution: f64,
+}
+
+/// Everything about one switch.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Analysis {
+    /// Name.
+    pub name: String,
+    /// The nominal scene's estimate.
+    pub nominal: Estimate,
+    /// The window (s): the Monte Carlo's percentile when there are tolerances, else the
+    /// nominal upper bound.
+    pub window: f64,
+    /// The window in ticks of the period, rounded up.
+    pub ticks: u32,
+    /// The Monte Carlo, with tolerances.
+    pub monte_carlo: Option<MonteCarlo>,
+    /// Sensitivities, largest contribution first (with tolerances).
+    pub sensitivity: Vec<Sensitivity>,
+}
+
+/// Draws the Monte Carlo samples in parallel; sample `i` is the same whatever the threads.
+fn monte_carlo(template: &Template, settings: &Settings) -> Result<MonteCarlo, FieldError> {
+    let n = settings.samples.max(1);
+    let threads = u64::try_from(settings.threads.max(1)).unwrap_or(1).min(n);
+    let done = AtomicU64::new(0);
+    let results: Vec<Result<Vec<Estimate>, FieldError>> = std::thread::scope(|scope| {
+        let handles: Vec<_> = (0..threads)
+            .map(|k| {
+                let done = &done;
+                scope.spawn(move || {
+                    let mut out = Vec::new();
+                    let mut i = k;
+                    while i < n {
+                        out.push(estimate(
+                            &template.sample(settings.seed, i),
+                            settings.tolerance,
+                        )?);
+                        done.fetch_add(1, Ordering::Relaxed);
+                        i += threads;
+                    }
+                    Ok(out)
+                })
+            })
+            .collect();
+        if settings.progress {
+            progress(&done, n, &handles);
+        }
+        handles
+            .into_iter()
+            .map(|h| {
+                h.join().unwrap_or_else(|_| {
+                    Err(FieldError {
+                        field: String::new(),
+                        message: "a worker panicked".to_owned(),
+                    })
+                })
+            })
+            .collect()
+    });
+    let mut all = Vec::new();
+    for r in results {
+        all.extend(r.map_err(|e| FieldError {
+            field: e.field,
+            message: format!(
+                "a Monte Carlo sample is invalid: {} (narrow the tolerance)",
+                e.message
+            ),
+        })?);
+    }
+    let exact = all.iter().filter(|e| e.tier == "exact reference").count();
+    let mut uppers: Vec<f64> = all.iter().map(|e| e.upper).collect();
+    let mut bounces: Vec<f64> = all.iter().map(|e| e.bounce).collect();
+    uppers.sort_by(f64::total_cmp);
+    bounces.sort_by(f64::total_cmp);
+    let at = |v: &[f64], q: f64| {
+        #[allow(
+            clippy::cast_precision_loss,
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss
+        )]
+        let i = ((q / 100.0 * v.len() as f64).ceil() as usize).clamp(1, v.len()) - 1;
+        v[i]
+    };
+    Ok(MonteCarlo {
+        samples: n,
+        p50: at(&bounces, 50.0),
+        window: at(&uppers, settings.percentile),
+        max: *uppers.last().unwrap_or(&f64::NAN),
+        exact: u64::try_from(exact).unwrap_or(u64::MAX),
+    })
+}
+
+fn progress<T>(done: &AtomicU64, total: u64, handles: &[std::thread::ScopedJoinHandle<'_, T>]) {
+    use std::io::Write;
+    let start = std::time::Instant::now();
+    let mut shown = false;
+    while handles.iter().any(|h| !h.is_finished()) {
+        std::thread::sleep(std::time::Duration::from_millis(200));
+        if start.elapsed().as_secs_f64() < 1.0 {
+            continue;
+        }
+        let d = done.load(Ordering::Relaxed);
+        #[allow(
+            clippy::cast_precision_loss,
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss
+        )]
+        let filled = (40.0 * d as f64 / total as f64) as usize;
+        eprint!(
+            "\r[{}{}] {d}/{total} samples",
+            "#".repeat(filled),
+            " ".repeat(40 - filled.min(40))
+        );
+        let _ = std::io::stderr().flush();
+        shown = true;
+    }
+    if shown {
+        eprintln!();
+    }
+}
+
+fn sensitivities(template: &Template, tolerance: f64) -> Result<Vec<Sensitivity>, FieldError> {
+    let h = 0.01_f64;
+    let mut out = Vec::new();
+    for (k, (path, dist)) in template.params().iter().enumerate() {
+        if dist.nominal() == 0.0 || dist.relative_half_width() == 0.0 {
+            continue;
+        }
+        let up = estimate(&template.scaled(k, 1.0 + h), tolerance)?.bounce;
+        let down = estimate(&template.scaled(k, 1.0 - h), tolerance)?.bounce;
+        let elasticity = (up.ln() - down.ln()) / ((1.0 + h).ln() - (1.0 - h).ln());
+        out.push(Sensitivity {
+            parameter: path.join("."),
+            elasticity,
+            contribution: elasticity.abs() * dist.relative_half_width(),
+        });
+    }
+    out.sort_by(|a, b| b.contribution.total_cmp(&a.contribution));
+    Ok(out)
+}
+
+/// Analyses one switch.
+///
+/// # Errors
+/// The invalid field (of the nominal scene, or of a sample: the tolerance reaches outside the
+/// model), or a window that does not fit in ticks.
+pub fn analyse(
+    name: &str,
+    template: &Template,
+    settings: &Settings,
+) -> Result<Analysis, FieldError> {
+    let nominal = estimate(template.nominal(), settings.tolerance)?;
+    let (monte_carlo, sensitivity) = if template.params().is_empty() {
+        (None, Vec::new())
+    } else {
+        let mc = monte_carlo(template, settings)?;
+        let s = sensitivities(template, settings.tolerance)?;
+        (Some(mc), s)
+    };
+    let window = monte_carlo.as_ref().map_or(nominal.upper, |m| m.window);
+    let ticks = contact_bounce::Window::from_seconds(
+        window,
+        &contact_bounce::Margin::none(),
+        settings.period,
+    )
+    .map_err(|e| FieldError {
+        field: "period".to_owned(),
+        message: e.to_string(),
+    })?
+    .ticks();
+    Ok(Analysis {
+        name: name.to_owned(),
+        nominal,
+        window,
+        ticks,
+        monte_carlo,
+        sensitivity,
+    })
+}
+
+/// The nodes the averaged envelope of the plots uses.
+pub const PLOT_NODES: Nodes = Nodes::N8;

@@ -1,0 +1,181 @@
+//! Reading switches: the built-in catalogue, or a scene file (TOML, JSON or JSON Lines) whose
+//! entries use the keys of `eval` and may carry tolerances (see [`crate::spreads`]).
+
+use serde_json::{json, Value};
+
+use crate::scene_input::FieldError;
+use crate::spreads::Template;
+
+/// One switch to analyse.
+#[derive(Debug, Clone)]
+pub struct Entry {
+    /// Its name (or "entry N").
+    pub name: String,
+    /// Its scene, with tolerances.
+    pub template: Template,
+}
+
+/// A scene file's fault: where, and what.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FileError {
+    /// The file.
+    pub file: String,
+    /// "entry N (name)", "line N", or empty.
+    pub place: String,
+    /// The field, or empty.
+    pub field: String,
+    /// What is wrong.
+    pub message: String,
+}
+
+impl std::fmt::Display for FileError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}", self.file)?;
+        if !self.place.is_empty() {
+            write!(f, ": {}", self.place)?;
+        }
+        if !self.field.is_empty() {
+            write!(f, ": {}", self.field)?;
+        }
+        write!(f, ": {}", self.message)
+    }
+}
+
+/// The typical switches of physics.md sec. 7.
+#[must_use]
+pub fn catalogue() -> Vec<Entry> {
+    contact_bounce::catalogue::ALL
+        .iter()
+        .filter_map(|s| {
+            let scene = json!({
+                "name": s.name, "mass": s.mass, "stiffness": s.stiffness, "preload_force": s.preload_force,
+                "restitution": s.restitution, "damping_ratio": s.damping_ratio, "closing_speed": s.closing_speed,
+            });
+            Template::parse(&scene).ok().map(|template| Entry { name: s.name.to_owned(), template })
+        })
+        .collect()
+}
+
+fn entries_of(file: &str, scenes: Vec<Value>) -> Result<Vec<Entry>, Vec<FileError>> {
+    let mut out = Vec::new();
+    let mut errors = Vec::new();
+    for (i, scene) in scenes.into_iter().enumerate() {
+        let name = scene
+            .get("name")
+            .and_then(Value::as_str)
+            .map_or_else(|| format!("entry {}", i + 1), str::to_owned);
+        let place = format!("entry {} ({name})", i + 1);
+        if !scene.is_object() {
+            errors.push(FileError {
+                file: file.to_owned(),
+                place,
+                field: String::new(),
+                message: "a switch must be a table/object".to_owned(),
+            });
+            continue;
+        }
+        // Validate the nominal scene now, so every entry's fault is reported at once.
+        let checked = Template::parse(&scene).and_then(|t| {
+            crate::scene_input::SceneInput::from_json(t.nominal(), &name)?.core::<f64>()?;
+            Ok(t)
+        });
+        match checked {
+            Ok(template) => out.push(Entry { name, template }),
+            Err(FieldError { field, message }) => errors.push(FileError {
+                file: file.to_owned(),
+                place,
+                field,
+                message,
+            }),
+        }
+    }
+    if out.is_empty() && errors.is_empty() {
+        errors.push(FileError {
+            file: file.to_owned(),
+            place: String::new(),
+            field: String::new(),
+            message: "no switches in the file".to_owned(),
+        });
+    }
+    if errors.is_empty() {
+        Ok(out)
+    } else {
+        Err(errors)
+    }
+}
+
+/// Reads a scene file: `.toml` (an array of `[[switch]]` tables), `.json` (an array of
+/// objects, or an object with a `switch` array) or `.jsonl` (one object a line).
+///
+/// # Errors
+/// Every fault found, each naming the file, the entry (or line) and the field.
+pub fn read(path: &str) -> Result<Vec<Entry>, Vec<FileError>> {
+    let fail = |place: String, message: String| {
+        vec![FileError {
+            file: path.to_owned(),
+            place,
+            field: String::new(),
+            message,
+        }]
+    };
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| fail(String::new(), format!("cannot read it: {e}")))?;
+    let scenes: Vec<Value> = if path.ends_with(".toml") {
+        let doc: toml::Table = toml::from_str(&text).map_err(|e| {
+            let line = e.span().map_or(0, |s| {
+                text[..s.start.min(text.len())].lines().count().max(1)
+            });
+            fail(format!("line {line}"), e.message().to_owned())
+        })?;
+        let mut keys = doc.keys().filter(|k| k.as_str() != "switch");
+        if let Some(k) = keys.next() {
+            return Err(fail(
+                String::new(),
+                format!("unknown top-level key '{k}': switches go in [[switch]] tables"),
+            ));
+        }
+        match doc.get("switch") {
+            Some(toml::Value::Array(items)) => items
+                .iter()
+                .map(|v| serde_json::to_value(v).unwrap_or(Value::Null))
+                .collect(),
+            _ => return Err(fail(String::new(), "no [[switch]] tables".to_owned())),
+        }
+    } else if path.ends_with(".jsonl") {
+        let mut scenes = Vec::new();
+        for (i, line) in text
+            .lines()
+            .enumerate()
+            .filter(|(_, l)| !l.trim().is_empty())
+        {
+            scenes.push(
+                serde_json::from_str(line)
+                    .map_err(|e| fail(format!("line {}", i + 1), format!("not JSON: {e}")))?,
+            );
+        }
+        scenes
+    } else {
+        let doc: Value = serde_json::from_str(&text)
+            .map_err(|e| fail(format!("line {}", e.line()), format!("not JSON: {e}")))?;
+        match doc {
+            Value::Array(items) => items,
+            Value::Object(mut o) => match o.remove("switch") {
+                Some(Value::Array(items)) => items,
+                _ => {
+                    return Err(fail(
+                        String::new(),
+                        "expected an array of switches, or an object with a \"switch\" array"
+                            .to_owned(),
+                    ))
+                }
+            },
+            _ => {
+                return Err(fail(
+                    String::new(),
+                    "expected an array of switches".to_owned(),
+                ))
+            }
+        }
+    };
+    entries_of(path, scenes)
+}

@@ -1,0 +1,290 @@
+//! The desk tool end to end: the catalogue, scene files with tolerances, every output format
+//! (the C header and the Rust constants compile), the Monte Carlo (reproducible, and its
+//! percentile window covers the exact reference), plots, and bad input.
+
+use std::process::{Command, Output};
+
+use bounce_table::analysis::{analyse, Settings};
+use bounce_table::eval::exact_outcome;
+use bounce_table::scene_input::SceneInput;
+use bounce_table::scenes::read;
+
+const BIN: &str = env!("CARGO_BIN_EXE_bounce-table");
+
+fn run(args: &[&str]) -> Output {
+    Command::new(BIN)
+        .args(args)
+        .output()
+        .expect("run bounce-table")
+}
+
+fn example() -> String {
+    concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/example.toml").to_owned()
+}
+
+fn tmp(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("bounce-table-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    dir.join(name)
+}
+
+#[test]
+fn no_arguments_print_the_catalogue_as_typical_values() {
+    let out = run(&[]);
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).expect("utf8");
+    assert!(text.contains("not a datasheet"));
+    for name in ["MEMS micro-switch", "tactile dome", "large contactor"] {
+        assert!(text.contains(name), "{name}");
+    }
+    assert_eq!(
+        text.lines()
+            .filter(|l| l.contains("zeno_accumulation"))
+            .count(),
+        8
+    );
+}
+
+#[test]
+fn every_format_renders_and_the_firmware_constants_compile() {
+    for format in ["table", "markdown", "csv", "json"] {
+        let out = run(&["--format", format, "--period", "1e-5"]);
+        assert!(out.status.success(), "{format}");
+        assert!(
+            String::from_utf8_lossy(&out.stdout).contains("tactile dome"),
+            "{format}"
+        );
+    }
+    let json: serde_json::Value =
+        serde_json::from_slice(&run(&["--format", "json"]).stdout).expect("json");
+    assert_eq!(json.as_array().map(Vec::len), Some(8));
+    // The C header, included and used by a C file, compiles warning-free.
+    let header = tmp("bounce.h");
+    assert!(run(&[
+        "--format",
+        "c",
+        "--period",
+        "1e-5",
+        "--output",
+        header.to_str().expect("path")
+    ])
+    .status
+    .success());
+    let c = tmp("use.c");
+    std::fs::write(&c, format!("#include <stdint.h>\n#include \"{}\"\nuint32_t w(void) {{ return BOUNCE_TACTILE_DOME_WINDOW_TICKS + (uint32_t)(BOUNCE_LARGE_CONTACTOR_WINDOW_NS > 0); }}\n", header.display())).expect("write");
+    let cc = Command::new("cc")
+        .args([
+            "-std=c99",
+            "-Wall",
+            "-Wextra",
+            "-Werror",
+            "-pedantic",
+            "-c",
+            "-o",
+        ])
+        .arg(tmp("use.o"))
+        .arg(&c)
+        .output()
+        .expect("cc");
+    assert!(
+        cc.status.success(),
+        "{}",
+        String::from_utf8_lossy(&cc.stderr)
+    );
+    // The Rust constants compile as a crate with -D warnings.
+    let rs = tmp("bounce.rs");
+    assert!(run(&[
+        &example(),
+        "--format",
+        "rust",
+        "--samples",
+        "200",
+        "--output",
+        rs.to_str().expect("path")
+    ])
+    .status
+    .success());
+    let rustc = Command::new("rustc")
+        .args([
+            "--edition",
+            "2021",
+            "--crate-type",
+            "lib",
+            "-D",
+            "warnings",
+            "-o",
+        ])
+        .arg(tmp("libbounce.rlib"))
+        .arg(&rs)
+        .output()
+        .expect("rustc");
+    assert!(
+        rustc.status.success(),
+        "{}",
+        String::from_utf8_lossy(&rustc.stderr)
+    );
+    assert!(std::fs::read_to_string(&rs)
+        .expect("rs")
+        .contains("pub const MY_TACTILE_BUTTON_WINDOW_TICKS: u32"));
+}
+
+#[test]
+fn json_and_jsonl_scene_files_read_like_toml() {
+    let json = tmp("switches.json");
+    std::fs::write(&json, r#"{"switch": [{"name": "a", "omega": 1000, "gap": -0.001, "restitution": {"min": 0.5, "max": 0.6}, "closing_speed": 0.2}]}"#).expect("write");
+    let jsonl = tmp("switches.jsonl");
+    std::fs::write(&jsonl, "{\"name\": \"b\", \"omega\": 1000, \"gap\": -0.001, \"restitution\": 0.5, \"closing_speed\": 0.2}\n").expect("write");
+    for file in [&json, &jsonl] {
+        let out = run(&[file.to_str().expect("path"), "--samples", "100"]);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+    assert_eq!(
+        read(json.to_str().expect("path")).expect("entries")[0]
+            .template
+            .params()
+            .len(),
+        1
+    );
+}
+
+#[test]
+fn the_monte_carlo_is_reproducible_for_a_seed() {
+    let entries = read(&example()).expect("example");
+    let settings = Settings {
+        samples: 500,
+        seed: 7,
+        threads: 2,
+        ..Settings::default()
+    };
+    let a = analyse(&entries[0].name, &entries[0].template, &settings).expect("analysis");
+    // The same seed with another thread count: the same samples, the same window.
+    let b = analyse(
+        &entries[0].name,
+        &entries[0].template,
+        &Settings {
+            threads: 1,
+            ..settings
+        },
+    )
+    .expect("analysis");
+    assert_eq!(a, b);
+    let c = analyse(
+        &entries[0].name,
+        &entries[0].template,
+        &Settings {
+            seed: 8,
+            ..settings
+        },
+    )
+    .expect("analysis");
+    assert_ne!(a.monte_carlo, c.monte_carlo);
+}
+
+#[test]
+fn the_percentile_window_covers_the_reference_for_fresh_samples() {
+    // P99.9 of 4000 upper bounds (each prediction widened by its expected error) against the
+    // exact reference on 2000 samples of another seed: at most 0.5 % may exceed it (0.1 % are
+    // expected; 0.5 % is five binomial standard deviations of 2000 draws above that).
+    let entries = read(&example()).expect("example");
+    let entry = &entries[0];
+    let settings = Settings {
+        samples: 4000,
+        seed: 1,
+        ..Settings::default()
+    };
+    let window = analyse(&entry.name, &entry.template, &settings)
+        .expect("analysis")
+        .window;
+    let mut exceed = 0;
+    let fresh = 2000;
+    for i in 0..fresh {
+        let scene = entry.template.sample(99, i);
+        let input = SceneInput::from_json(&scene, "sample").expect("valid");
+        let out = exact_outcome(&input).expect("reference");
+        if out.end_time.expect("preload") > window {
+            exceed += 1;
+        }
+    }
+    assert!(
+        exceed * 200 <= fresh,
+        "{exceed} of {fresh} exact bounces exceed the P99.9 window {window}"
+    );
+}
+
+#[test]
+fn plots_are_written() {
+    let dir = tmp("plots");
+    assert!(run(&[
+        &example(),
+        "--samples",
+        "50",
+        "--plot",
+        dir.to_str().expect("path")
+    ])
+    .status
+    .success());
+    for stem in [
+        "my_tactile_button",
+        "relay_pair",
+        "reed_with_a_polymer_kernel",
+    ] {
+        for kind in ["envelope", "motion"] {
+            let svg = std::fs::read_to_string(dir.join(format!("{stem}-{kind}.svg"))).expect("svg");
+            assert!(
+                svg.starts_with("<svg")
+                    && svg.trim_end().ends_with("</svg>")
+                    && svg.contains("polyline")
+            );
+        }
+    }
+}
+
+#[test]
+fn bad_input_names_the_file_the_entry_and_the_field_and_writes_nothing() {
+    let cases = [
+        ("bad.toml", "[[switch]]\nname = \"x\"\nmass = \n", "line 3"),
+        ("typo.toml", "[[switch]]\nname = \"x\"\nomega = 1000\ngapp = -0.001\nrestitution = 0.5\nclosing_speed = 0.1\n", "entry 1 (x): gapp"),
+        ("negative.toml", "[[switch]]\nname = \"ok\"\nomega = 1000\ngap = -0.001\nrestitution = 0.5\nclosing_speed = 0.1\n\n[[switch]]\nname = \"bad\"\nmass = -1\nstiffness = 5\npreload_force = 1\nrestitution = 0.5\nclosing_speed = 0.1\n", "entry 2 (bad): mass"),
+        ("spread.toml", "[[switch]]\nname = \"wide\"\nomega = 1000\ngap = -0.001\nrestitution = { value = 0.9, spread = 0.3 }\nclosing_speed = 0.1\n", "entry 1 (wide): restitution"),
+        ("tolerance.toml", "[[switch]]\nname = \"t\"\nomega = { min = 2, max = 1 }\ngap = -0.001\nrestitution = 0.5\nclosing_speed = 0.1\n", "entry 1 (t): omega"),
+        ("missing.toml", "", "no [[switch]]"),
+    ];
+    let output = tmp("kept.txt");
+    for (name, text, expected) in cases {
+        let file = tmp(name);
+        std::fs::write(&file, text).expect("write");
+        std::fs::write(&output, "previous contents").expect("write");
+        let out = run(&[
+            file.to_str().expect("path"),
+            "--samples",
+            "200",
+            "--output",
+            output.to_str().expect("path"),
+        ]);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{name}: {stderr}");
+        assert!(
+            stderr.contains(name) && stderr.contains(expected),
+            "{name}: {stderr}"
+        );
+        assert_eq!(
+            std::fs::read_to_string(&output).expect("kept"),
+            "previous contents",
+            "{name}"
+        );
+    }
+    assert_eq!(run(&["/nonexistent/switches.toml"]).status.code(), Some(2));
+    for args in [
+        &["--format", "pdf"][..],
+        &["--period", "0"],
+        &["--percentile", "120"],
+        &["--samples", "0"],
+        &["--what"],
+    ] {
+        assert_eq!(run(args).status.code(), Some(2), "{args:?}");
+    }
+}
