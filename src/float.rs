@@ -167,6 +167,13 @@ pub trait Float:
     }
 }
 
+/// The math backend of `f32` in this build: "micromath" or "libm" (`f64` always uses libm).
+pub const F32_BACKEND: &str = if cfg!(feature = "micromath") {
+    "micromath"
+} else {
+    "libm"
+};
+
 /// Converts an `f64` table to `f32` at compile time.
 const fn narrow<const N: usize>(wide: [(f64, f64); N]) -> [(f32, f32); N] {
     let mut out = [(0.0f32, 0.0f32); N];

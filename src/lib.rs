@@ -43,7 +43,7 @@ pub use averaged::{Averaged, Bodies, EnvelopePoint, Motion};
 pub use closed::Estimate;
 pub use debounce::{Debouncer, Edge, Mode, Polarity, State, Windows};
 pub use error::{Error, Parameter, Reason, PHYSICAL_RANGE};
-pub use float::Float;
+pub use float::{Float, F32_BACKEND};
 pub use map::{Impact, MapEnd, MapImpacts, DEFAULT_MAX_IMPACTS};
 pub use mechanisms::{
     restitution_rate, AnyDissipation, Asymptote, Dissipation, HarmonicSum, Hereditary, Undamped,

@@ -218,3 +218,59 @@ fn kernels_keep_their_expected_error() {
         problems.join("\n")
     );
 }
+
+#[test]
+fn auto_keeps_its_promise_at_ten_one_and_a_tenth_of_a_percent() {
+    use contact_bounce::Tolerance;
+    use host_tests::reference::{simulate, DEFAULT_BUDGET};
+    let mut promised = [0_usize; 3];
+    let mut problems = Vec::new();
+    let scenes: Vec<_> = grid().into_iter().chain(off_grid(300, 0xa070)).collect();
+    for scene in &scenes {
+        let Ok(core) = scene.core() else { continue };
+        let truth = simulate(&scene.reference, DEFAULT_BUDGET).expect("reference");
+        let Some(t) = truth.end_time.or(truth.last_above_time) else {
+            continue;
+        };
+        for (k, tol) in [0.1, 0.01, 0.001].into_iter().enumerate() {
+            let tolerance = Tolerance::new(tol).expect("valid");
+            let p = core.predict(Method::Auto(tolerance));
+            if !p.promises(tolerance) {
+                continue; // Auto says it cannot promise: ask the exact reference instead
+            }
+            promised[k] += 1;
+            let c = p.bounce_time().expect("a promised bounce is finite");
+            let error = if t == 0.0 {
+                if c == 0.0 {
+                    0.0
+                } else {
+                    f64::INFINITY
+                }
+            } else {
+                (c / t - 1.0).abs()
+            };
+            if error > tol {
+                problems.push(format!(
+                    "{} at {tol}: {:?} error {error:.5}",
+                    scene.name, p.tier
+                ));
+            }
+        }
+    }
+    // Auto must promise often enough to be useful, and keep every promise.
+    eprintln!(
+        "promised at 10 %, 1 %, 0.1 %: {promised:?} of {} scenes",
+        scenes.len()
+    );
+    assert!(
+        promised[0] > scenes.len() / 2 && promised[2] > scenes.len() / 10,
+        "{promised:?} of {}",
+        scenes.len()
+    );
+    assert!(
+        problems.is_empty(),
+        "{} broken promises:\n{}",
+        problems.len(),
+        problems.join("\n")
+    );
+}
