@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Every test and check that CI runs, on a fresh machine: installs what it needs (rustup targets
-# and components, mpmath for the table generators), then runs the host tests and doctests,
-# clippy and rustdoc with -D warnings, the no_std builds for every Cortex-M target and feature
-# set, the firmware size report, and checks that the committed generated tables are current.
+# and components, mpmath for the table generators, scipy for the trade report's peer), then runs
+# the host tests and doctests, clippy and rustdoc with -D warnings, the no_std builds for every
+# Cortex-M target and feature set, the firmware (QEMU, simavr), the size, cost and trade reports,
+# and checks that the committed generated and measured tables are current.
 # Exits non-zero on the first failure; ends with "N passed, N failed" for the tests it ran.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -13,7 +14,10 @@ step() { printf '\n==> %s\n' "$*"; }
 step "toolchain: targets and components"
 rustup target add "${targets[@]}"
 rustup component add clippy rustfmt llvm-tools
-python3 -c "import mpmath" 2>/dev/null || python3 -m pip install --quiet mpmath
+# (a system Python that refuses pip, PEP 668, gets --break-system-packages: CI machines are throwaway)
+pip_install() { python3 -m pip install --quiet "$@" || python3 -m pip install --quiet --break-system-packages "$@"; }
+python3 -c "import mpmath" 2>/dev/null || pip_install mpmath
+python3 -c "import scipy, numpy" 2>/dev/null || pip_install scipy numpy
 
 # Property tests explore a fixed seed in CI (reproducible); run them without it locally to
 # explore new cases (failures are kept in host-tests/tests/*.proptest-regressions and replayed).
@@ -67,6 +71,9 @@ scripts/uno.sh
 
 step "cost report runs (instructions on Cortex-M, cycles on the Uno; debouncer no dearer than debouncr)"
 scripts/cost-report.sh > /dev/null
+
+step "speed/accuracy trade pipeline runs (sweep, benchmarks in test mode, peer on one scene)"
+scripts/trade-report.sh --quick
 
 step "generated tables are current"
 # (the committed files are the generators' output as rustfmt leaves it)

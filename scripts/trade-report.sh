@@ -11,7 +11,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 quick=0
 [ "${1:-}" = "--quick" ] && quick=1
-python3 -c "import scipy, numpy" 2>/dev/null || python3 -m pip install --quiet scipy numpy
+python3 -c "import scipy, numpy" 2>/dev/null || python3 -m pip install --quiet scipy numpy ||
+  python3 -m pip install --quiet --break-system-packages scipy numpy
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cargo run --quiet --release -p host-tests --bin trade -- --scenes "$tmp/scenes.json" > "$tmp/libm.json"

@@ -51,7 +51,7 @@ fn f32_scene(g: &GridScene) -> Option<Scene<f32, Viscous<f32>>> {
 fn relative(c: Option<f64>, t: f64) -> f64 {
     match c {
         Some(c) if t > 0.0 => (c / t - 1.0).abs(),
-        Some(c) if c == 0.0 => 0.0,
+        Some(0.0) => 0.0,
         _ => f64::INFINITY,
     }
 }
