@@ -62,7 +62,8 @@ pub struct Estimate {
     pub expected_error: f64,
 }
 
-fn regime_name(r: Regime) -> &'static str {
+/// The regime's name in the outputs (snake case).
+pub(crate) fn regime_name(r: Regime) -> &'static str {
     match r {
         Regime::ZenoAccumulation => "zeno_accumulation",
         Regime::LastImpact => "last_impact",

@@ -8,12 +8,13 @@
 use std::io::{BufRead, Write};
 
 use contact_bounce::{
-    Count, Dissipation, Float, MapImpacts, Method as CoreMethod, Nodes, Prediction, Regime, Time,
+    Count, Dissipation, Float, MapImpacts, Method as CoreMethod, Nodes, Prediction, Time,
     Tolerance, DEFAULT_MAX_IMPACTS,
 };
 use host_tests::reference::{self, OneBody};
 use serde_json::{json, Value};
 
+use crate::analysis::regime_name;
 use crate::scene_input::{FieldError, SceneInput, Spring};
 
 /// The tier asked for.
@@ -114,17 +115,6 @@ pub fn options(args: &[String]) -> Result<Options, String> {
         }
     }
     Ok(out)
-}
-
-fn regime_name(r: Regime) -> &'static str {
-    match r {
-        Regime::ZenoAccumulation => "zeno_accumulation",
-        Regime::LastImpact => "last_impact",
-        Regime::Endless => "endless",
-        Regime::Periodic => "periodic",
-        Regime::SingleImpact => "single_impact",
-        _ => "unknown",
-    }
 }
 
 fn time<F: Float>(t: Time<F>) -> Value {

@@ -8,9 +8,7 @@
 use std::hint::black_box;
 use std::time::Duration;
 
-use contact_bounce::{
-    Contact, Frequency, Method, Nodes, Offset, Restitution, Scene, Threshold, Viscous,
-};
+use contact_bounce::{Method, Nodes};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use host_tests::grid::{grid, GridScene};
 use host_tests::reference::{simulate, DEFAULT_BUDGET};
@@ -25,22 +23,6 @@ pub const SCENES: [&str; 7] = [
     "tactile dome",
     "large contactor",
 ];
-
-fn f32_scene(g: &GridScene) -> Scene<f32, Viscous<f32>> {
-    let r = &g.reference;
-    #[allow(clippy::cast_possible_truncation)]
-    let contact = Contact {
-        frequency: Frequency::Omega(r.omega as f32),
-        offset: Offset::Delta(r.delta as f32),
-        restitution: Restitution::Loss((1.0 - r.restitution) as f32),
-        closing_speed: r.closing_speed as f32,
-        threshold: r
-            .threshold
-            .map_or(Threshold::None, |p| Threshold::Impulse(p as f32)),
-    };
-    #[allow(clippy::cast_possible_truncation)]
-    Scene::new(contact, Viscous::new(r.zeta as f32).expect("valid")).expect("valid")
-}
 
 fn tiers(c: &mut Criterion) {
     let all = grid();
@@ -95,7 +77,7 @@ fn tiers(c: &mut Criterion) {
         group.finish();
         let mut group = c.benchmark_group(format!("f32 {tier}"));
         for g in &scenes {
-            let s = f32_scene(g);
+            let s = g.core_f32().expect("valid");
             group.bench_with_input(BenchmarkId::from_parameter(&g.name), &s, |b, s| {
                 b.iter(|| black_box(s).predict(black_box(m32)))
             });

@@ -1,7 +1,7 @@
 //! The grid of scenes the core is checked on against the reference: every regime of
 //! physics.md sec. 4 and the switches of sec. 7 (j0, R, zeta and the sign of Delta varied).
 
-use contact_bounce::{Contact, Frequency, Offset, Restitution, Scene, Threshold, Viscous};
+use contact_bounce::{Contact, Float, Frequency, Offset, Restitution, Scene, Threshold, Viscous};
 
 use crate::reference::OneBody;
 
@@ -24,16 +24,30 @@ impl GridScene {
     /// # Errors
     /// When the core refuses the scene.
     pub fn core(&self) -> Result<Scene<f64, Viscous<f64>>, contact_bounce::Error> {
+        self.core_in()
+    }
+
+    /// The core's scene in f32 (each input rounded from f64; `1 - R` taken in f64).
+    ///
+    /// # Errors
+    /// When the core refuses the scene.
+    pub fn core_f32(&self) -> Result<Scene<f32, Viscous<f32>>, contact_bounce::Error> {
+        self.core_in()
+    }
+
+    fn core_in<F: Float>(&self) -> Result<Scene<F, Viscous<F>>, contact_bounce::Error> {
         let r = &self.reference;
         Scene::new(
             Contact {
-                frequency: Frequency::Omega(r.omega),
-                offset: Offset::Delta(r.delta),
-                restitution: Restitution::Loss(1.0 - r.restitution),
-                closing_speed: r.closing_speed,
-                threshold: r.threshold.map_or(Threshold::None, Threshold::Impulse),
+                frequency: Frequency::Omega(F::from_f64(r.omega)),
+                offset: Offset::Delta(F::from_f64(r.delta)),
+                restitution: Restitution::Loss(F::from_f64(1.0 - r.restitution)),
+                closing_speed: F::from_f64(r.closing_speed),
+                threshold: r
+                    .threshold
+                    .map_or(Threshold::None, |p| Threshold::Impulse(F::from_f64(p))),
             },
-            Viscous::new(r.zeta)?,
+            Viscous::new(F::from_f64(r.zeta))?,
         )
     }
 }

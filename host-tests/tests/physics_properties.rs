@@ -181,20 +181,8 @@ fn f32_follows_f64_over_the_grid() {
     // j0, where f32's tail cutoff of 5e-3 takes over sooner), else below 4e-7.
     let mut worst: f64 = 0.0;
     for g in grid() {
-        let r = &g.reference;
         let Ok(s64) = g.core() else { continue };
-        #[allow(clippy::cast_possible_truncation)]
-        let c32 = Contact {
-            frequency: Frequency::Omega(r.omega as f32),
-            offset: Offset::Delta(r.delta as f32),
-            restitution: Restitution::Loss((1.0 - r.restitution) as f32),
-            closing_speed: r.closing_speed as f32,
-            threshold: r
-                .threshold
-                .map_or(Threshold::None, |p| Threshold::Impulse(p as f32)),
-        };
-        #[allow(clippy::cast_possible_truncation)]
-        let s32 = Scene::new(c32, Viscous::new(r.zeta as f32).unwrap()).unwrap();
+        let s32 = g.core_f32().unwrap();
         for (a, b) in [
             (Method::Closed, Method::Closed),
             (Method::Averaged(Nodes::N8), Method::Averaged(Nodes::N8)),

@@ -8,11 +8,8 @@
 
 use std::collections::BTreeMap;
 
-use contact_bounce::{
-    Contact, Frequency, Method, Nodes, Offset, Prediction, Restitution, Scene, Threshold, Viscous,
-    F32_BACKEND,
-};
-use host_tests::grid::{grid, GridScene};
+use contact_bounce::{Method, Nodes, Prediction, F32_BACKEND};
+use host_tests::grid::grid;
 use host_tests::reference::{simulate, Outcome, Regime, DEFAULT_BUDGET};
 use serde_json::json;
 
@@ -30,22 +27,6 @@ fn methods<F: contact_bounce::Float>() -> Vec<(&'static str, Method<F>)> {
             },
         ),
     ]
-}
-
-fn f32_scene(g: &GridScene) -> Option<Scene<f32, Viscous<f32>>> {
-    let r = &g.reference;
-    #[allow(clippy::cast_possible_truncation)]
-    let contact = Contact {
-        frequency: Frequency::Omega(r.omega as f32),
-        offset: Offset::Delta(r.delta as f32),
-        restitution: Restitution::Loss((1.0 - r.restitution) as f32),
-        closing_speed: r.closing_speed as f32,
-        threshold: r
-            .threshold
-            .map_or(Threshold::None, |p| Threshold::Impulse(p as f32)),
-    };
-    #[allow(clippy::cast_possible_truncation)]
-    Scene::new(contact, Viscous::new(r.zeta as f32).ok()?).ok()
 }
 
 fn relative(c: Option<f64>, t: f64) -> f64 {
@@ -113,7 +94,7 @@ fn main() {
                 }
             }
         }
-        if let Some(s32) = f32_scene(&g) {
+        if let Ok(s32) = g.core_f32() {
             for (tier, m) in methods::<f32>() {
                 for (what, e) in errors(&s32.predict(m), &truth) {
                     if let Some(e) = e {
