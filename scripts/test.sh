@@ -18,6 +18,7 @@ rustup component add clippy rustfmt llvm-tools
 pip_install() { python3 -m pip install --quiet "$@" || python3 -m pip install --quiet --break-system-packages "$@"; }
 python3 -c "import mpmath" 2>/dev/null || pip_install mpmath
 python3 -c "import scipy, numpy" 2>/dev/null || pip_install scipy numpy
+python3 -c "import vcd" 2>/dev/null || pip_install pyvcd==0.5.1
 
 # Property tests explore a fixed seed in CI (reproducible); run them without it locally to
 # explore new cases (failures are kept in host-tests/tests/*.proptest-regressions and replayed).
@@ -75,6 +76,12 @@ scripts/cost-report.sh > /dev/null
 step "speed/accuracy trade pipeline runs (sweep, benchmarks in test mode, peer on one scene)"
 scripts/trade-report.sh --quick
 
+step "capture fixtures regenerate identically (pyvcd and Python's csv, scripts/capture-fixtures.py)"
+fixtures=$(mktemp -d)
+python3 scripts/capture-fixtures.py "$fixtures"
+diff -r "$fixtures" bounce-table/tests/fixtures
+rm -rf "$fixtures"
+
 step "generated tables are current"
 # (the committed files are the generators' output as rustfmt leaves it)
 python3 scripts/gauss_legendre.py | rustfmt --edition 2021 | diff - src/quadrature/table.rs
@@ -92,6 +99,13 @@ for path in ("README.md", "docs/eval-catalogue.md"):
     if table not in open(path).read():
         sys.exit(f"{path}: the eval table differs from scripts/eval-catalogue.sh's output")
 PY
+
+step "docs/calibration.md is current (needs the shared capture, ../shared/data)"
+if [ -f ../shared/data/bouncy-button-uno.jsonl ]; then
+  scripts/calibration-report.sh | diff - docs/calibration.md
+else
+  echo "SKIPPED: no ../shared/data/bouncy-button-uno.jsonl on this machine (not part of the repository)"
+fi
 
 step "the README's bounce-table example is current"
 example=$(cargo run --quiet --release -p bounce-table -- bounce-table/scenes/example.toml)

@@ -4,6 +4,8 @@
 //! JSON Lines interface to the model and the exact reference.
 
 pub mod analysis;
+pub mod calibrate;
+pub mod capture;
 pub mod eval;
 pub mod output;
 pub mod plot;

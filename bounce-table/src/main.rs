@@ -3,6 +3,7 @@
 //! ```text
 //! bounce-table [OPTIONS] [SCENE_FILE]      the catalogue of physics.md sec. 7, or your switches
 //! bounce-table eval [OPTIONS] < scenes.jsonl
+//! bounce-table calibrate [OPTIONS] CAPTURE   describe a capture of a real switch
 //! ```
 
 use std::process::ExitCode;
@@ -10,11 +11,13 @@ use std::process::ExitCode;
 use bounce_table::analysis::{analyse, Settings};
 use bounce_table::output::{identifier, render, Format};
 use bounce_table::scenes::{catalogue, read, FileError};
-use bounce_table::{eval, plot, scene_input::SceneInput};
+use bounce_table::{calibrate, eval, plot, scene_input::SceneInput};
 
 const USAGE: &str = "usage: bounce-table [OPTIONS] [SCENE_FILE]
        bounce-table eval [--method exact|map|averaged|closed|auto] [--tolerance X]
                          [--precision f32|f64] [--nodes N] < scenes.jsonl
+       bounce-table calibrate [--format jsonl|csv|vcd] [--resolution S] [--quiet S]
+                              [--signal NAME] [--active-high] [--skip-section NAME] CAPTURE
 
 Prints predicted bounce and debounce windows: for the built-in catalogue of typical switches
 (physics.md sec. 7: assumed values, not a datasheet), or for the switches of SCENE_FILE
@@ -30,7 +33,15 @@ Options:
   --samples N          Monte Carlo samples (4000)
   --seed S             Monte Carlo seed (1)
   --threads N          worker threads (all cores)
-  --plot DIR           also write NAME-envelope.svg and NAME-motion.svg for each switch";
+  --plot DIR           also write NAME-envelope.svg and NAME-motion.svg for each switch
+
+calibrate: describes a capture (JSON Lines of the bouncy-button format, a CSV of `time,level`
+rows, or a VCD; format from the extension) per switch and kind: bounce P50/P90/P99/max,
+transitions, resolved flights and dwells, chatter. High = open unless --active-high.
+  --resolution S       intervals shorter than S are chatter, not timed (3e-6)
+  --quiet S            in CSV/VCD streams, a gap longer than S starts a new event (0.2)
+  --signal NAME        the VCD signal (default: the only 1-bit one)
+  --skip-section NAME  leave out a JSON Lines section (repeatable)";
 
 struct Options {
     settings: Settings,
@@ -133,6 +144,28 @@ fn main() -> ExitCode {
             Err(e) => {
                 eprintln!("bounce-table eval: {e}");
                 ExitCode::FAILURE
+            }
+        };
+    }
+    if args.first().is_some_and(|a| a == "calibrate") {
+        let options = match calibrate::options(args.get(1..).unwrap_or_default()) {
+            Ok(o) => o,
+            Err(message) => {
+                eprintln!("bounce-table calibrate: {message}\n{USAGE}");
+                return ExitCode::from(2);
+            }
+        };
+        return match calibrate::load(&options) {
+            Ok((events, skipped)) => {
+                print!("{}", calibrate::describe(&events, options.resolution));
+                if skipped > 0 {
+                    println!("\n{skipped} tests skipped (sections marked invalid or named by --skip-section).");
+                }
+                ExitCode::SUCCESS
+            }
+            Err(e) => {
+                eprintln!("bounce-table calibrate: {e}");
+                ExitCode::from(2)
             }
         };
     }

@@ -40,7 +40,8 @@ impl Format {
     }
 }
 
-fn time(t: f64) -> String {
+/// A time for people: us below 1 ms, ms below 1 s, else s; "endless" when infinite.
+pub(crate) fn time(t: f64) -> String {
     if !t.is_finite() {
         "endless".to_owned()
     } else if t < 1e-3 {

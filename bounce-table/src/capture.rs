@@ -1,0 +1,700 @@
+//! Real captures of a switch: import them (JSON Lines of the bouncy-button format, a CSV of
+//! edges, a Value Change Dump), cut them into press and release events, and describe each
+//! event's bounce: duration, transitions, resolved open intervals (flights) and closed intervals
+//! (dwell), and the intervals too short for the instrument (chatter).
+//!
+//! Levels follow the usual wiring, a pull-up and a switch to ground: high = open, low = closed
+//! (`Polarity::ActiveLow`); `Polarity::ActiveHigh` reads the other way.
+
+use std::fmt;
+
+use serde_json::Value;
+
+/// Which way the switch moved.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Kind {
+    /// Open to closed (make).
+    Press,
+    /// Closed to open (break).
+    Release,
+}
+
+impl Kind {
+    /// Its name in the outputs.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Kind::Press => "press",
+            Kind::Release => "release",
+        }
+    }
+}
+
+/// How a logic level maps to the contact.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Polarity {
+    /// High = open (pull-up, switch to ground).
+    #[default]
+    ActiveLow,
+    /// High = closed.
+    ActiveHigh,
+}
+
+impl Polarity {
+    fn closed(self, high: bool) -> bool {
+        match self {
+            Polarity::ActiveLow => !high,
+            Polarity::ActiveHigh => high,
+        }
+    }
+}
+
+/// One press or release: the contact's state before it, and the times of its changes (s).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Event {
+    /// The switch (a dataset, a file).
+    pub switch: String,
+    /// Where it came from (a line, a time), for messages.
+    pub origin: String,
+    /// Press or release (from the state before the first change).
+    pub kind: Kind,
+    /// The times of the changes, nondecreasing, in seconds; the contact alternates at each.
+    pub changes: Vec<f64>,
+}
+
+/// A capture that cannot be read: the file, the line (1-based, 0 when it is the whole file)
+/// and what is wrong.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct CaptureError {
+    /// The file.
+    pub file: String,
+    /// The line, 1-based; 0 for the file as a whole.
+    pub line: usize,
+    /// What is wrong.
+    pub reason: String,
+}
+
+impl fmt::Display for CaptureError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.line == 0 {
+            write!(f, "{}: {}", self.file, self.reason)
+        } else {
+            write!(f, "{}:{}: {}", self.file, self.line, self.reason)
+        }
+    }
+}
+
+impl std::error::Error for CaptureError {}
+
+fn error(file: &str, line: usize, reason: impl Into<String>) -> CaptureError {
+    CaptureError {
+        file: file.to_owned(),
+        line,
+        reason: reason.into(),
+    }
+}
+
+/// A stream of level changes: the contact's state before the first, and the change times (s).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Stream {
+    /// Closed before the first change.
+    pub closed_before: bool,
+    /// Change times in seconds, nondecreasing.
+    pub changes: Vec<f64>,
+}
+
+impl Stream {
+    /// Cuts the stream into events: a new event starts at a change that follows the previous
+    /// one by more than `quiet` seconds. Each event is a press if the contact was open before
+    /// it, else a release.
+    #[must_use]
+    pub fn segment(&self, switch: &str, quiet: f64) -> Vec<Event> {
+        let mut events = Vec::new();
+        let mut closed = self.closed_before;
+        let mut current: Vec<f64> = Vec::new();
+        let mut start_closed = closed;
+        for &t in &self.changes {
+            if current.last().is_some_and(|&last| t - last > quiet) {
+                events.push(event(switch, start_closed, std::mem::take(&mut current)));
+                start_closed = closed;
+            }
+            current.push(t);
+            closed = !closed;
+        }
+        if !current.is_empty() {
+            events.push(event(switch, start_closed, current));
+        }
+        events
+    }
+}
+
+fn event(switch: &str, closed_before: bool, changes: Vec<f64>) -> Event {
+    Event {
+        switch: switch.to_owned(),
+        origin: format!("t = {:.6} s", changes.first().copied().unwrap_or(0.0)),
+        kind: if closed_before {
+            Kind::Release
+        } else {
+            Kind::Press
+        },
+        changes,
+    }
+}
+
+/// Appends a change at `t` to `changes` if the contact state differs from `closed`; a repeated
+/// level is no change. Times must not go back.
+fn push_change(
+    changes: &mut Vec<f64>,
+    closed: &mut bool,
+    now_closed: bool,
+    t: f64,
+) -> Result<(), String> {
+    if !t.is_finite() {
+        return Err(format!("time {t} is not a finite number"));
+    }
+    if changes.last().is_some_and(|&last| t < last) {
+        return Err(format!("time {t} s goes back in time"));
+    }
+    if now_closed != *closed {
+        changes.push(t);
+        *closed = now_closed;
+    }
+    Ok(())
+}
+
+fn level(text: &str) -> Option<bool> {
+    match text.trim() {
+        "1" | "high" | "H" => Some(true),
+        "0" | "low" | "L" => Some(false),
+        _ => None,
+    }
+}
+
+/// Reads a CSV of level changes: one `time,level` row per change (time in seconds, level 0 or
+/// 1); an optional header row, blank lines and `#` comments are skipped. The first row gives
+/// the level at the start of the capture (not a change).
+///
+/// # Errors
+/// A row that is not two fields, a time that is not a finite number or goes back, a level
+/// other than 0/1, or a file with no rows: the error names the line.
+pub fn read_csv(file: &str, text: &str, polarity: Polarity) -> Result<Stream, CaptureError> {
+    let mut start: Option<bool> = None;
+    let mut closed = false;
+    let mut changes = Vec::new();
+    for (i, raw) in text.lines().enumerate() {
+        let line = i + 1;
+        let row = raw.trim();
+        if row.is_empty() || row.starts_with('#') {
+            continue;
+        }
+        let fields: Vec<&str> = row.split(',').map(str::trim).collect();
+        let [time, value] = fields[..] else {
+            return Err(error(
+                file,
+                line,
+                format!("expected `time,level`, found {row:?}"),
+            ));
+        };
+        let Ok(t) = time.parse::<f64>() else {
+            if start.is_none() && changes.is_empty() && level(value).is_none() {
+                continue; // a header row
+            }
+            return Err(error(file, line, format!("time {time:?} is not a number")));
+        };
+        let Some(high) = level(value) else {
+            return Err(error(file, line, format!("level {value:?} is not 0 or 1")));
+        };
+        let now_closed = polarity.closed(high);
+        if start.is_none() {
+            if !t.is_finite() {
+                return Err(error(
+                    file,
+                    line,
+                    format!("time {t} is not a finite number"),
+                ));
+            }
+            start = Some(now_closed);
+            closed = now_closed;
+            continue;
+        }
+        push_change(&mut changes, &mut closed, now_closed, t)
+            .map_err(|reason| error(file, line, reason))?;
+    }
+    let Some(closed_before) = start else {
+        return Err(error(file, 0, "no rows: expected `time,level` rows"));
+    };
+    Ok(Stream {
+        closed_before,
+        changes,
+    })
+}
+
+/// Reads a Value Change Dump (IEEE 1364 sec. 18: what sigrok/PulseView and most logic
+/// analyzers export) and returns the changes of one 1-bit signal: the one named `signal`, or
+/// the only 1-bit signal when `signal` is `None`. The value at the first time stamp (or in
+/// `$dumpvars`) is the starting level.
+///
+/// # Errors
+/// A malformed header or time stamp, an unknown or ambiguous signal, a signal wider than one
+/// bit, an `x`/`z` value on the signal, or a signal with no value: the error names the line.
+pub fn read_vcd(
+    file: &str,
+    text: &str,
+    signal: Option<&str>,
+    polarity: Polarity,
+) -> Result<Stream, CaptureError> {
+    // Tokens with their line numbers.
+    let tokens: Vec<(usize, &str)> = text
+        .lines()
+        .enumerate()
+        .flat_map(|(i, l)| l.split_whitespace().map(move |t| (i + 1, t)))
+        .collect();
+    let mut scale = None;
+    let mut vars: Vec<(String, String, u32, usize)> = Vec::new(); // (id, name, width, line)
+    let mut k = 0;
+    let block_end = |from: usize| -> Result<usize, CaptureError> {
+        tokens[from..]
+            .iter()
+            .position(|&(_, t)| t == "$end")
+            .map(|p| from + p)
+            .ok_or_else(|| error(file, tokens[from - 1].0, "a `$` section without `$end`"))
+    };
+    // The header, up to $enddefinitions.
+    loop {
+        let Some(&(line, tok)) = tokens.get(k) else {
+            return Err(error(file, 0, "no `$enddefinitions $end`: not a VCD file"));
+        };
+        match tok {
+            "$enddefinitions" => {
+                k = block_end(k + 1)? + 1;
+                break;
+            }
+            "$timescale" => {
+                let end = block_end(k + 1)?;
+                let spec: String = tokens[k + 1..end].iter().map(|&(_, t)| t).collect();
+                scale = Some(timescale(&spec).ok_or_else(|| {
+                    error(
+                        file,
+                        line,
+                        format!("timescale {spec:?} is not 1/10/100 s|ms|us|ns|ps|fs"),
+                    )
+                })?);
+                k = end + 1;
+            }
+            "$var" => {
+                let end = block_end(k + 1)?;
+                let fields: Vec<&str> = tokens[k + 1..end].iter().map(|&(_, t)| t).collect();
+                let [_, width, id, name, ..] = fields[..] else {
+                    return Err(error(
+                        file,
+                        line,
+                        "`$var` needs a type, a width, an id and a name",
+                    ));
+                };
+                let width = width
+                    .parse()
+                    .map_err(|_| error(file, line, format!("width {width:?} is not a number")))?;
+                vars.push((id.to_owned(), name.to_owned(), width, line));
+                k = end + 1;
+            }
+            t if t.starts_with('$') => k = block_end(k + 1)? + 1,
+            other => {
+                return Err(error(
+                    file,
+                    line,
+                    format!("{other:?} before `$enddefinitions`"),
+                ));
+            }
+        }
+    }
+    let scale = scale.ok_or_else(|| error(file, 0, "no `$timescale`"))?;
+    let (id, name) = match signal {
+        Some(wanted) => {
+            let (id, name, width, line) = vars
+                .iter()
+                .find(|(_, n, _, _)| n == wanted)
+                .ok_or_else(|| error(file, 0, format!("no signal named {wanted:?}")))?;
+            if *width != 1 {
+                return Err(error(
+                    file,
+                    *line,
+                    format!("signal {name:?} is {width} bits wide, not 1"),
+                ));
+            }
+            (id.clone(), name.clone())
+        }
+        None => {
+            let one_bit: Vec<_> = vars.iter().filter(|v| v.2 == 1).collect();
+            match one_bit[..] {
+                [(id, name, _, _)] => (id.clone(), name.clone()),
+                [] => return Err(error(file, 0, "no 1-bit signal")),
+                _ => {
+                    let names: Vec<&str> = one_bit.iter().map(|v| v.1.as_str()).collect();
+                    return Err(error(
+                        file,
+                        0,
+                        format!("several 1-bit signals ({}): name one", names.join(", ")),
+                    ));
+                }
+            }
+        }
+    };
+    let mut now: Option<f64> = None;
+    let mut start: Option<bool> = None;
+    let mut closed = false;
+    let mut changes = Vec::new();
+    while let Some(&(line, tok)) = tokens.get(k) {
+        k += 1;
+        if let Some(stamp) = tok.strip_prefix('#') {
+            let ticks: u64 = stamp.parse().map_err(|_| {
+                error(
+                    file,
+                    line,
+                    format!("time stamp {tok:?} is not a whole number"),
+                )
+            })?;
+            #[allow(clippy::cast_precision_loss)]
+            let t = ticks as f64 * scale;
+            if now.is_some_and(|n| t < n) {
+                return Err(error(
+                    file,
+                    line,
+                    format!("time stamp {tok:?} goes back in time"),
+                ));
+            }
+            now = Some(t);
+            continue;
+        }
+        if matches!(
+            tok,
+            "$dumpvars" | "$dumpall" | "$dumpon" | "$dumpoff" | "$end"
+        ) {
+            continue;
+        }
+        if tok.starts_with('$') {
+            k = block_end(k)? + 1;
+            continue;
+        }
+        // A vector or real value: `b0101 id` / `r1.5 id`, on another signal (ours is 1-bit).
+        if tok.starts_with(['b', 'B', 'r', 'R']) {
+            let Some(&(_, target)) = tokens.get(k) else {
+                return Err(error(file, line, format!("{tok:?} without a signal id")));
+            };
+            if target == id {
+                return Err(error(
+                    file,
+                    line,
+                    format!("a vector value on the 1-bit signal {name:?}"),
+                ));
+            }
+            k += 1;
+            continue;
+        }
+        let mut chars = tok.chars();
+        let value = chars.next().unwrap_or('?');
+        if chars.as_str() != id {
+            continue;
+        }
+        let high = match value {
+            '1' => true,
+            '0' => false,
+            'x' | 'X' | 'z' | 'Z' => {
+                return Err(error(
+                    file,
+                    line,
+                    format!("signal {name:?} is {value} (unknown) here"),
+                ));
+            }
+            other => {
+                return Err(error(
+                    file,
+                    line,
+                    format!("value {other:?} is not 0, 1, x or z"),
+                ))
+            }
+        };
+        let now_closed = polarity.closed(high);
+        let Some(t) = now else {
+            return Err(error(file, line, "a value before the first time stamp"));
+        };
+        if start.is_none() {
+            start = Some(now_closed);
+            closed = now_closed;
+            continue;
+        }
+        push_change(&mut changes, &mut closed, now_closed, t)
+            .map_err(|reason| error(file, line, reason))?;
+    }
+    let closed_before =
+        start.ok_or_else(|| error(file, 0, format!("signal {name:?} never has a value")))?;
+    Ok(Stream {
+        closed_before,
+        changes,
+    })
+}
+
+/// Seconds per tick of a VCD `$timescale` such as `1ns`, `10 us`.
+fn timescale(spec: &str) -> Option<f64> {
+    let digits: String = spec.chars().take_while(char::is_ascii_digit).collect();
+    let unit = &spec[digits.len()..];
+    let n: f64 = match digits.as_str() {
+        "1" => 1.0,
+        "10" => 10.0,
+        "100" => 100.0,
+        _ => return None,
+    };
+    let unit = match unit {
+        "s" => 1.0,
+        "ms" => 1e-3,
+        "us" => 1e-6,
+        "ns" => 1e-9,
+        "ps" => 1e-12,
+        "fs" => 1e-15,
+        _ => return None,
+    };
+    Some(n * unit)
+}
+
+/// Reads the JSON Lines of the bouncy-button capture (`../shared/data/`): one test per line,
+/// `dataset`, `kind`, `events` `[[t_ns, level], ...]` (the first entry is the level before the
+/// test; level 1 = open), `section`, `section_invalid`. Tests in sections marked invalid, and in
+/// the sections named in `skip`, are skipped and counted.
+///
+/// # Errors
+/// A line that is not JSON, or misses a field, or whose events do not start with a level, go
+/// back in time or disagree with `kind`: the error names the line.
+pub fn read_jsonl(
+    file: &str,
+    text: &str,
+    skip: &[String],
+) -> Result<(Vec<Event>, usize), CaptureError> {
+    let mut events = Vec::new();
+    let mut skipped = 0;
+    for (i, raw) in text.lines().enumerate() {
+        let line = i + 1;
+        if raw.trim().is_empty() {
+            continue;
+        }
+        let v: Value =
+            serde_json::from_str(raw).map_err(|e| error(file, line, format!("not JSON: {e}")))?;
+        let section = v.get("section").and_then(Value::as_str);
+        if v.get("section_invalid").and_then(Value::as_bool) == Some(true)
+            || section.is_some_and(|name| skip.iter().any(|s| s == name))
+        {
+            skipped += 1;
+            continue;
+        }
+        let field = |name: &str| {
+            v.get(name)
+                .ok_or_else(|| error(file, line, format!("no `{name}`")))
+        };
+        let switch = field("dataset")?
+            .as_str()
+            .ok_or_else(|| error(file, line, "`dataset` is not a string"))?;
+        let kind = match field("kind")?.as_str() {
+            Some("press") => Kind::Press,
+            Some("release") => Kind::Release,
+            _ => return Err(error(file, line, "`kind` is not \"press\" or \"release\"")),
+        };
+        let entries = field("events")?
+            .as_array()
+            .ok_or_else(|| error(file, line, "`events` is not an array"))?;
+        let mut pairs = entries.iter().map(|e| {
+            let t = e.get(0).and_then(Value::as_f64);
+            let l = e.get(1).and_then(Value::as_u64);
+            match (t, l) {
+                (Some(t), Some(l @ (0 | 1))) => Ok((t * 1e-9, l == 1)),
+                _ => Err(error(file, line, format!("event {e} is not [t_ns, 0|1]"))),
+            }
+        });
+        let Some(first) = pairs.next() else {
+            return Err(error(file, line, "`events` is empty: no starting level"));
+        };
+        let mut closed = Polarity::ActiveLow.closed(first?.1);
+        let closed_before = closed;
+        if (kind == Kind::Press) == closed_before {
+            return Err(error(
+                file,
+                line,
+                format!(
+                    "a {} that starts {}",
+                    kind.name(),
+                    if closed { "closed" } else { "open" }
+                ),
+            ));
+        }
+        let mut changes = Vec::new();
+        for p in pairs {
+            let (t, high) = p?;
+            push_change(
+                &mut changes,
+                &mut closed,
+                Polarity::ActiveLow.closed(high),
+                t,
+            )
+            .map_err(|reason| error(file, line, reason))?;
+        }
+        let test = v
+            .get("test")
+            .map_or_else(String::new, |t| format!(" test {t}"));
+        events.push(Event {
+            switch: switch.to_owned(),
+            origin: format!("line {line}{test}"),
+            kind,
+            changes,
+        });
+    }
+    Ok((events, skipped))
+}
+
+/// One event described at an instrument resolution.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Description {
+    /// Last change minus first change (s); 0 for a clean edge.
+    pub bounce: f64,
+    /// Number of changes.
+    pub transitions: usize,
+    /// Open intervals inside the event at least `resolution` long (s), in order.
+    pub flights: Vec<f64>,
+    /// Closed intervals inside the event at least `resolution` long (s), in order.
+    pub dwells: Vec<f64>,
+    /// Intervals shorter than `resolution` (their times are not resolved).
+    pub chatter: usize,
+}
+
+impl Event {
+    /// The event's bounce at an instrument resolution (s).
+    #[must_use]
+    pub fn describe(&self, resolution: f64) -> Description {
+        let mut flights = Vec::new();
+        let mut dwells = Vec::new();
+        let mut chatter = 0;
+        // After the first change the contact is closed for a press, open for a release.
+        let mut closed = self.kind == Kind::Press;
+        for w in self.changes.windows(2) {
+            let d = w[1] - w[0];
+            if d < resolution {
+                chatter += 1;
+            } else if closed {
+                dwells.push(d);
+            } else {
+                flights.push(d);
+            }
+            closed = !closed;
+        }
+        let bounce = match (self.changes.first(), self.changes.last()) {
+            (Some(a), Some(b)) => b - a,
+            _ => 0.0,
+        };
+        Description {
+            bounce,
+            transitions: self.changes.len(),
+            flights,
+            dwells,
+            chatter,
+        }
+    }
+}
+
+/// The `q`-quantile (0..=1) of sorted data by the nearest-rank method; `None` when empty.
+#[must_use]
+pub fn quantile(sorted: &[f64], q: f64) -> Option<f64> {
+    if sorted.is_empty() {
+        return None;
+    }
+    #[allow(
+        clippy::cast_precision_loss,
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss
+    )]
+    let rank = ((q * sorted.len() as f64).ceil() as usize).clamp(1, sorted.len());
+    sorted.get(rank - 1).copied()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_stream_is_cut_at_quiet_gaps_and_kinds_alternate() {
+        let s = Stream {
+            closed_before: false,
+            changes: vec![1.0, 1.001, 1.002, 2.0, 2.0005],
+        };
+        let e = s.segment("sw", 0.1);
+        assert_eq!(e.len(), 2);
+        assert_eq!(e[0].kind, Kind::Press);
+        assert_eq!(e[0].changes, vec![1.0, 1.001, 1.002]);
+        // Three changes leave it closed: the next event is a release.
+        assert_eq!(e[1].kind, Kind::Release);
+    }
+
+    #[test]
+    fn a_press_is_described_as_dwells_flights_and_chatter() {
+        let e = Event {
+            switch: "sw".into(),
+            origin: String::new(),
+            kind: Kind::Press,
+            // closed 10 us, open 1 us (chatter), closed 20 us, open 30 us, closed.
+            changes: vec![0.0, 10e-6, 11e-6, 31e-6, 61e-6],
+        };
+        let d = e.describe(3e-6);
+        assert_eq!(d.transitions, 5);
+        assert_eq!(d.chatter, 1);
+        assert_eq!(d.dwells.len(), 2);
+        assert_eq!(d.flights.len(), 1);
+        assert!((d.flights[0] - 30e-6).abs() < 1e-12);
+        assert!((d.bounce - 61e-6).abs() < 1e-12);
+    }
+
+    #[test]
+    fn csv_rejects_what_it_cannot_read_naming_the_line() {
+        let bad = [
+            ("time,level\n0,1\n0.5,2\n", 3, "level"),
+            ("0,1\n0.5\n", 2, "expected"),
+            ("0,1\n0.5,0\n0.4,1\n", 3, "back in time"),
+            ("0,1\nabc,0\n", 2, "not a number"),
+            ("0,1\nNaN,0\n", 2, "finite"),
+        ];
+        for (text, line, why) in bad {
+            let e = read_csv("f.csv", text, Polarity::ActiveLow).unwrap_err();
+            assert_eq!(e.line, line, "{text:?}: {e}");
+            assert!(e.reason.contains(why), "{text:?}: {e}");
+        }
+        assert_eq!(
+            read_csv("f.csv", "# nothing\n", Polarity::ActiveLow)
+                .unwrap_err()
+                .line,
+            0
+        );
+    }
+
+    #[test]
+    fn vcd_rejects_what_it_cannot_read_naming_the_line() {
+        let head = "$timescale 1ns $end\n$scope module top $end\n$var wire 1 ! sw $end\n$upscope $end\n$enddefinitions $end\n";
+        let bad = [
+            (format!("{head}#0\n1!\n#5\nx!\n"), 9, "unknown"),
+            (format!("{head}#10\n1!\n#5\n0!\n"), 8, "back in time"),
+            (format!("{head}1!\n"), 6, "before the first time stamp"),
+            (format!("{head}#1.5\n"), 6, "whole number"),
+            ("$timescale 3 ns $end\n".to_owned(), 1, "timescale"),
+            ("#0\n1!\n".to_owned(), 1, "before `$enddefinitions`"),
+        ];
+        for (text, line, why) in bad {
+            let e = read_vcd("f.vcd", &text, None, Polarity::ActiveLow).unwrap_err();
+            assert_eq!(e.line, line, "{text:?}: {e}");
+            assert!(e.reason.contains(why), "{text:?}: {e}");
+        }
+        let e = read_vcd("f.vcd", head, Some("other"), Polarity::ActiveLow).unwrap_err();
+        assert!(e.reason.contains("no signal named"), "{e}");
+    }
+
+    #[test]
+    fn jsonl_rejects_a_kind_that_disagrees_with_the_starting_level() {
+        let line = r#"{"dataset":"d","kind":"press","events":[[0,0],[10,1]]}"#;
+        let e = read_jsonl("f.jsonl", line, &[]).unwrap_err();
+        assert!(e.reason.contains("starts closed"), "{e}");
+        let e = read_jsonl("f.jsonl", "{\n", &[]).unwrap_err();
+        assert_eq!(e.line, 1);
+    }
+}

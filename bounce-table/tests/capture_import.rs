@@ -1,0 +1,127 @@
+//! The capture importers against files written by independent writers: a VCD by pyvcd and a
+//! CSV by Python's csv module (`scripts/capture-fixtures.py`), holding the same synthetic capture
+//! as `expected.json`. And malformed variants of them, rejected with the line named.
+
+use bounce_table::capture::{read_csv, read_vcd, Kind, Polarity, Stream};
+use serde_json::Value;
+
+fn fixture(name: &str) -> String {
+    let path = format!("{}/tests/fixtures/{name}", env!("CARGO_MANIFEST_DIR"));
+    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"))
+}
+
+fn expected() -> Stream {
+    let v: Value = serde_json::from_str(&fixture("expected.json")).unwrap();
+    Stream {
+        closed_before: v["closed_before"].as_bool().unwrap(),
+        #[allow(clippy::cast_precision_loss)]
+        changes: v["changes_ns"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|t| t.as_u64().unwrap() as f64 * 1e-9)
+            .collect(),
+    }
+}
+
+#[test]
+fn pyvcd_output_reads_back_exactly() {
+    let s = read_vcd(
+        "button.vcd",
+        &fixture("button.vcd"),
+        Some("sw"),
+        Polarity::ActiveLow,
+    )
+    .unwrap();
+    assert_eq!(s, expected());
+    // The other 1-bit signal is read too when named; the bus is refused.
+    let led = read_vcd(
+        "button.vcd",
+        &fixture("button.vcd"),
+        Some("led"),
+        Polarity::ActiveLow,
+    )
+    .unwrap();
+    assert!(!led.changes.is_empty());
+    let e = read_vcd(
+        "button.vcd",
+        &fixture("button.vcd"),
+        Some("bus"),
+        Polarity::ActiveLow,
+    )
+    .unwrap_err();
+    assert!(e.reason.contains("8 bits"), "{e}");
+    let e = read_vcd(
+        "button.vcd",
+        &fixture("button.vcd"),
+        None,
+        Polarity::ActiveLow,
+    )
+    .unwrap_err();
+    assert!(e.reason.contains("several 1-bit signals (sw, led)"), "{e}");
+}
+
+#[test]
+fn python_csv_output_reads_back_exactly() {
+    let s = read_csv("button.csv", &fixture("button.csv"), Polarity::ActiveLow).unwrap();
+    assert_eq!(s, expected());
+    // Active high reads every level the other way: the same times, the contact closed first.
+    let flipped = read_csv("button.csv", &fixture("button.csv"), Polarity::ActiveHigh).unwrap();
+    assert_eq!(flipped.changes, s.changes);
+    assert!(flipped.closed_before);
+}
+
+#[test]
+fn the_capture_is_cut_into_its_presses_and_releases() {
+    let s = expected();
+    let events = s.segment("button", 0.2);
+    let kinds: Vec<Kind> = events.iter().map(|e| e.kind).collect();
+    assert_eq!(
+        kinds,
+        [Kind::Press, Kind::Release, Kind::Press, Kind::Release]
+    );
+    // A quiet gap shorter than the late re-close (1 ms after the release) splits that event.
+    assert_eq!(s.segment("button", 0.5e-3).len(), 5);
+    // The first press at 2 us resolution: closed 12 us, open 3 us, closed 45 us, open 1 us
+    // (chatter), then closed.
+    let d = events[0].describe(2e-6);
+    assert_eq!(
+        (d.transitions, d.chatter, d.dwells.len(), d.flights.len()),
+        (5, 1, 2, 1)
+    );
+    assert!((d.flights[0] - 3e-6).abs() < 1e-12, "{:?}", d.flights);
+    assert!((d.bounce - 61e-6).abs() < 1e-12);
+    // The last release: two chatter intervals, a flight of 998.4 us, the late re-close (chatter).
+    let d = events[3].describe(2e-6);
+    assert_eq!(
+        (d.chatter, d.flights.len(), d.dwells.len()),
+        (3, 1, 0),
+        "{d:?}"
+    );
+}
+
+#[test]
+fn malformed_variants_are_rejected_with_the_line() {
+    let vcd = fixture("button.vcd");
+    let no_header_end = vcd.replace("$enddefinitions $end", "");
+    let e = read_vcd("v.vcd", &no_header_end, Some("sw"), Polarity::ActiveLow).unwrap_err();
+    assert!(e.reason.contains("enddefinitions"), "{e}");
+    let backwards = vcd.replacen("#600000000", "#6000", 1);
+    let line = backwards.lines().position(|l| l == "#6000").unwrap() + 1;
+    let e = read_vcd("v.vcd", &backwards, Some("sw"), Polarity::ActiveLow).unwrap_err();
+    assert_eq!(
+        (e.line, e.reason.contains("back in time")),
+        (line, true),
+        "{e}"
+    );
+    let unknown = vcd.replacen("\n0!\n", "\nx!\n", 1);
+    let e = read_vcd("v.vcd", &unknown, Some("sw"), Polarity::ActiveLow).unwrap_err();
+    assert!(e.reason.contains("unknown"), "{e}");
+
+    let csv = fixture("button.csv");
+    let mut lines: Vec<&str> = csv.lines().collect();
+    lines[4] = "0.100015,2";
+    let e = read_csv("c.csv", &lines.join("\n"), Polarity::ActiveLow).unwrap_err();
+    assert_eq!(e.line, 5, "{e}");
+    assert_eq!(e.to_string(), "c.csv:5: level \"2\" is not 0 or 1");
+}
