@@ -6,6 +6,7 @@
 use std::sync::atomic::{AtomicU64, Ordering};
 
 use contact_bounce::{Method, Nodes, Prediction, Regime, Tolerance};
+use host_tests::stats::nearest_rank;
 use serde_json::Value;
 
 use crate::eval::exact_outcome;
@@ -229,19 +230,16 @@ fn monte_carlo(template: &Template, settings: &Settings) -> Result<MonteCarlo, F
     uppers.sort_by(f64::total_cmp);
     bounces.sort_by(f64::total_cmp);
     let at = |v: &[f64], q: f64| {
-        #[allow(
-            clippy::cast_precision_loss,
-            clippy::cast_possible_truncation,
-            clippy::cast_sign_loss
-        )]
-        let i = ((q / 100.0 * v.len() as f64).ceil() as usize).clamp(1, v.len()) - 1;
-        v[i]
+        nearest_rank(v, q / 100.0).ok_or_else(|| FieldError {
+            field: String::new(),
+            message: "no Monte Carlo sample".to_owned(),
+        })
     };
     Ok(MonteCarlo {
         samples: n,
-        p50: at(&bounces, 50.0),
-        window: at(&uppers, settings.percentile),
-        max: *uppers.last().unwrap_or(&f64::NAN),
+        p50: at(&bounces, 50.0)?,
+        window: at(&uppers, settings.percentile)?,
+        max: at(&uppers, 100.0)?,
         exact: u64::try_from(exact).unwrap_or(u64::MAX),
     })
 }

@@ -5,6 +5,7 @@ use std::collections::BTreeMap;
 
 use crate::capture::{self, CaptureError, Event, Kind, Polarity};
 use crate::output::time;
+use host_tests::stats::nearest_rank;
 
 /// The capture's format.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -135,7 +136,7 @@ fn sorted(mut v: Vec<f64>) -> Vec<f64> {
 }
 
 fn q(v: &[f64], p: f64, show: impl Fn(f64) -> String) -> String {
-    capture::quantile(v, p).map_or_else(|| "-".to_owned(), show)
+    nearest_rank(v, p).map_or_else(|| "-".to_owned(), show)
 }
 
 /// The description table (markdown): per switch and kind, the events, the share of clean edges

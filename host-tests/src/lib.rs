@@ -3,4 +3,5 @@
 
 pub mod grid;
 pub mod reference;
+pub mod stats;
 pub mod traces;

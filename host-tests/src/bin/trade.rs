@@ -11,6 +11,7 @@ use std::collections::BTreeMap;
 use contact_bounce::{Method, Nodes, Prediction, F32_BACKEND};
 use host_tests::grid::grid;
 use host_tests::reference::{simulate, Outcome, Regime, DEFAULT_BUDGET};
+use host_tests::stats::nearest_rank;
 use serde_json::json;
 
 fn methods<F: contact_bounce::Float>() -> Vec<(&'static str, Method<F>)> {
@@ -111,11 +112,9 @@ fn main() {
         .into_iter()
         .map(|((tier, precision, regime, what), mut v)| {
             v.sort_by(f64::total_cmp);
-            let at = |q: f64| {
-                #[allow(clippy::cast_precision_loss, clippy::cast_possible_truncation, clippy::cast_sign_loss)]
-                let i = ((q * v.len() as f64).ceil() as usize).clamp(1, v.len()) - 1;
-                let x = v[i];
-                if x.is_finite() { json!(x) } else { json!("inf") }
+            let at = |q: f64| match nearest_rank(&v, q) {
+                Some(x) if x.is_finite() => json!(x),
+                _ => json!("inf"),
             };
             json!({
                 "tier": tier, "precision": precision, "backend": if precision == "f32" { F32_BACKEND } else { "libm" },
