@@ -17,7 +17,8 @@ const USAGE: &str = "usage: bounce-table [OPTIONS] [SCENE_FILE]
        bounce-table eval [--method exact|map|averaged|closed|auto] [--tolerance X]
                          [--precision f32|f64] [--nodes N] < scenes.jsonl
        bounce-table calibrate [--format jsonl|csv|vcd] [--resolution S] [--quiet S]
-                              [--signal NAME] [--active-high] [--skip-section NAME] CAPTURE
+                              [--signal NAME] [--active-high] [--skip-section NAME]
+                              [--percentile P] [--seed N] [--export c|rust] CAPTURE
 
 Prints predicted bounce and debounce windows: for the built-in catalogue of typical switches
 (physics.md sec. 7: assumed values, not a datasheet), or for the switches of SCENE_FILE
@@ -36,12 +37,17 @@ Options:
   --plot DIR           also write NAME-envelope.svg and NAME-motion.svg for each switch
 
 calibrate: describes a capture (JSON Lines of the bouncy-button format, a CSV of `time,level`
-rows, or a VCD; format from the extension) per switch and kind: bounce P50/P90/P99/max,
-transitions, resolved flights and dwells, chatter. High = open unless --active-high.
+rows, or a VCD; format from the extension) per switch and kind (bounce P50/P90/P99/max,
+transitions, resolved flights and dwells, chatter), fits the impact model, checks it and the
+empirical quantiles on held-out halves, and recommends windows. High = open unless
+--active-high.
   --resolution S       intervals shorter than S are chatter, not timed (3e-6)
   --quiet S            in CSV/VCD streams, a gap longer than S starts a new event (0.2)
   --signal NAME        the VCD signal (default: the only 1-bit one)
-  --skip-section NAME  leave out a JSON Lines section (repeatable)";
+  --skip-section NAME  leave out a JSON Lines section (repeatable)
+  --percentile P       the windows' percentile of the observed bounce (99)
+  --seed N             the random held-out split's seed (1)
+  --export c|rust      print only the windows, as #defines or Rust constants (ns)";
 
 struct Options {
     settings: Settings,
@@ -157,10 +163,22 @@ fn main() -> ExitCode {
         };
         return match calibrate::load(&options) {
             Ok((events, skipped)) => {
-                print!("{}", calibrate::describe(&events, options.resolution));
+                let groups = calibrate::group(&events, options.resolution);
+                if let Some(rust) = options.export {
+                    print!(
+                        "{}",
+                        calibrate::export(&groups, options.percentile, options.seed, rust)
+                    );
+                    return ExitCode::SUCCESS;
+                }
+                print!("{}", calibrate::describe(&groups, options.resolution));
                 if skipped > 0 {
                     println!("\n{skipped} tests skipped (sections marked invalid or named by --skip-section).");
                 }
+                print!(
+                    "{}",
+                    calibrate::assess(&groups, options.percentile, options.seed)
+                );
                 ExitCode::SUCCESS
             }
             Err(e) => {
