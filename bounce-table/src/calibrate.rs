@@ -41,6 +41,8 @@ pub struct Options {
     pub seed: u64,
     /// Print the windows as C (`Some(false)`) or Rust (`Some(true)`) instead of the report.
     pub export: Option<bool>,
+    /// Write one SVG per switch and kind there.
+    pub plot: Option<String>,
 }
 
 fn seconds(name: &str, v: &str) -> Result<f64, String> {
@@ -65,6 +67,7 @@ pub fn options(args: &[String]) -> Result<Options, String> {
     let mut percentile = 0.99;
     let mut seed = 1;
     let mut export = None;
+    let mut plot = None;
     let mut it = args.iter();
     while let Some(arg) = it.next() {
         let mut value = |name: &str| it.next().cloned().ok_or(format!("{name} needs a value"));
@@ -97,6 +100,7 @@ pub fn options(args: &[String]) -> Result<Options, String> {
                     .parse()
                     .map_err(|_| format!("--seed: '{v}' is not a whole number"))?;
             }
+            "--plot" => plot = Some(value("--plot")?),
             "--export" => {
                 export = Some(match value("--export")?.as_str() {
                     "c" => false,
@@ -133,6 +137,7 @@ pub fn options(args: &[String]) -> Result<Options, String> {
         percentile,
         seed,
         export,
+        plot,
     })
 }
 
@@ -523,4 +528,53 @@ pub fn export(groups: &Groups<'_>, percentile: f64, seed: u64, rust: bool) -> St
         out.push_str(&format!("\n#endif /* {guard} */\n"));
     }
     out
+}
+
+/// The SVG of one switch and kind: the observed bounce's cumulative distribution against the
+/// impact model's (each event's first flight / (1 - R), fitted on all events; absent when R >= 1),
+/// on a log10 time axis. Clean edges (no bounce) are left out and counted in the title.
+#[must_use]
+pub fn plot(switch: &str, kind: Kind, d: &[capture::Description]) -> String {
+    let refs: Vec<&capture::Description> = d.iter().collect();
+    let fit = ImpactFit::new(&refs);
+    let cdf = |v: Vec<f64>| -> Vec<(f64, f64)> {
+        let v = sorted(v.into_iter().filter(|t| *t > 0.0).collect());
+        #[allow(clippy::cast_precision_loss)]
+        let n = v.len() as f64;
+        v.iter()
+            .enumerate()
+            .map(|(i, t)| {
+                #[allow(clippy::cast_precision_loss)]
+                let rank = (i + 1) as f64;
+                (t.log10(), rank / n)
+            })
+            .collect()
+    };
+    let observed = cdf(d.iter().map(|x| x.bounce).collect());
+    let clean = d.len() - observed.len();
+    let mut series = vec![crate::plot::Series {
+        label: "observed",
+        colour: "#1f77b4",
+        points: observed,
+        dots: true,
+    }];
+    let modelled: Option<Vec<f64>> = refs.iter().map(|x| fit.bounce(x)).collect();
+    if let Some(m) = modelled {
+        series.push(crate::plot::Series {
+            label: "impact model",
+            colour: "#d62728",
+            points: cdf(m),
+            dots: false,
+        });
+    }
+    crate::plot::svg(
+        &format!(
+            "{switch} {}: bounce CDF ({clean}/{} clean left out)",
+            kind.name(),
+            d.len()
+        ),
+        "log10 bounce (s)",
+        "fraction of bouncing events",
+        &series,
+    )
 }

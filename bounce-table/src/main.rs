@@ -18,7 +18,8 @@ const USAGE: &str = "usage: bounce-table [OPTIONS] [SCENE_FILE]
                          [--precision f32|f64] [--nodes N] < scenes.jsonl
        bounce-table calibrate [--format jsonl|csv|vcd] [--resolution S] [--quiet S]
                               [--signal NAME] [--active-high] [--skip-section NAME]
-                              [--percentile P] [--seed N] [--export c|rust] CAPTURE
+                              [--percentile P] [--seed N] [--export c|rust] [--plot DIR]
+                              CAPTURE
 
 Prints predicted bounce and debounce windows: for the built-in catalogue of typical switches
 (physics.md sec. 7: assumed values, not a datasheet), or for the switches of SCENE_FILE
@@ -47,7 +48,8 @@ empirical quantiles on held-out halves, and recommends windows. High = open unle
   --skip-section NAME  leave out a JSON Lines section (repeatable)
   --percentile P       the windows' percentile of the observed bounce (99)
   --seed N             the random held-out split's seed (1)
-  --export c|rust      print only the windows, as #defines or Rust constants (ns)";
+  --export c|rust      print only the windows, as #defines or Rust constants (ns)
+  --plot DIR           also write SWITCH-KIND.svg: observed bounce distribution vs the model";
 
 struct Options {
     settings: Settings,
@@ -170,6 +172,22 @@ fn main() -> ExitCode {
                         calibrate::export(&groups, options.percentile, options.seed, rust)
                     );
                     return ExitCode::SUCCESS;
+                }
+                if let Some(dir) = &options.plot {
+                    for ((switch, kind), d) in &groups {
+                        let name = format!(
+                            "{dir}/{}-{}.svg",
+                            identifier(switch).to_lowercase(),
+                            kind.name()
+                        );
+                        let svg = calibrate::plot(switch, *kind, d);
+                        if let Err(e) = std::fs::create_dir_all(dir)
+                            .and_then(|()| write_atomically(&name, &svg))
+                        {
+                            eprintln!("bounce-table calibrate: {name}: {e}");
+                            return ExitCode::FAILURE;
+                        }
+                    }
                 }
                 print!("{}", calibrate::describe(&groups, options.resolution));
                 if skipped > 0 {

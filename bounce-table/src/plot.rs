@@ -10,14 +10,15 @@ use crate::eval::exact_outcome;
 use crate::scene_input::{FieldError, SceneInput, Spring};
 
 /// One line or set of points on a plot.
-struct Series {
-    label: &'static str,
-    colour: &'static str,
-    points: Vec<(f64, f64)>,
-    dots: bool,
+pub(crate) struct Series {
+    pub(crate) label: &'static str,
+    pub(crate) colour: &'static str,
+    pub(crate) points: Vec<(f64, f64)>,
+    pub(crate) dots: bool,
 }
 
-fn svg(title: &str, x_label: &str, y_label: &str, series: &[Series]) -> String {
+/// A plot of `series` (lines, or dots) with axes, ticks and a legend.
+pub(crate) fn svg(title: &str, x_label: &str, y_label: &str, series: &[Series]) -> String {
     let (w, h, left, right, top, bottom) = (760.0, 380.0, 90.0, 20.0, 40.0, 55.0);
     let all = series
         .iter()

@@ -175,3 +175,21 @@ fn exported_windows_compile_as_c_and_rust() {
     );
     assert!(constants.contains(&want), "{constants}");
 }
+
+#[test]
+fn the_plot_draws_the_observed_and_the_modelled_distribution() {
+    let events: Vec<Event> = (0..6).map(|i| press(0.7, 0.01, f64::from(i))).collect();
+    let groups = group(&events, 1e-12);
+    let ((switch, kind), d) = groups.iter().next().unwrap();
+    let svg = bounce_table::calibrate::plot(switch, *kind, d);
+    assert!(svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"));
+    assert!(
+        svg.contains("observed") && svg.contains("impact model"),
+        "{svg}"
+    );
+    assert_eq!(
+        svg.matches("<circle").count(),
+        6,
+        "one dot per bouncing event"
+    );
+}
