@@ -3,6 +3,8 @@
 //! between impacts. The fit must recover R and the scale v0 / (Omega^2 |Delta|), say that the
 //! impact model holds, and its held-out predictions must match.
 
+mod common;
+
 use bounce_table::calibrate::{group, validations, ImpactFit};
 use bounce_table::capture::{Event, Kind};
 use host_tests::reference::{simulate_observed, OneBody, DEFAULT_BUDGET};
@@ -122,25 +124,7 @@ fn exported_windows_compile_as_c_and_rust() {
         ),
     )
     .unwrap();
-    let cc = std::process::Command::new("cc")
-        .args([
-            "-std=c99",
-            "-Wall",
-            "-Wextra",
-            "-Werror",
-            "-pedantic",
-            "-c",
-            "-o",
-        ])
-        .arg(dir.join("use.o"))
-        .arg(&c)
-        .output()
-        .expect("run cc");
-    assert!(
-        cc.status.success(),
-        "{}",
-        String::from_utf8_lossy(&cc.stderr)
-    );
+    common::compile_c(&c, &dir);
     let rs = dir.join("windows.rs");
     let constants = bounce_table::calibrate::export(&groups, 0.99, 1, true);
     std::fs::write(
@@ -148,25 +132,7 @@ fn exported_windows_compile_as_c_and_rust() {
         format!("{constants}\npub fn w() -> u64 {{ SYNTHETIC_PRESS_WINDOW_NS }}\n"),
     )
     .unwrap();
-    let rustc = std::process::Command::new("rustc")
-        .args([
-            "--edition",
-            "2021",
-            "--crate-type",
-            "lib",
-            "-D",
-            "warnings",
-            "-o",
-        ])
-        .arg(dir.join("libw.rlib"))
-        .arg(&rs)
-        .output()
-        .expect("run rustc");
-    assert!(
-        rustc.status.success(),
-        "{}",
-        String::from_utf8_lossy(&rustc.stderr)
-    );
+    common::compile_rust(&rs, &dir);
     // The window is the bounce of these identical presses (nanoseconds, rounded up).
     let bounce = groups.values().flatten().next().unwrap().bounce;
     let want = format!(

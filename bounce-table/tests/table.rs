@@ -2,6 +2,8 @@
 //! (the C header and the Rust constants compile), the Monte Carlo (reproducible, and its
 //! percentile window covers the exact reference), plots, and bad input.
 
+mod common;
+
 use std::process::{Command, Output};
 
 use bounce_table::analysis::{analyse, Settings};
@@ -72,25 +74,7 @@ fn every_format_renders_and_the_firmware_constants_compile() {
     .success());
     let c = tmp("use.c");
     std::fs::write(&c, format!("#include <stdint.h>\n#include \"{}\"\nuint32_t w(void) {{ return BOUNCE_TACTILE_DOME_WINDOW_TICKS + (uint32_t)(BOUNCE_LARGE_CONTACTOR_WINDOW_NS > 0); }}\n", header.display())).expect("write");
-    let cc = Command::new("cc")
-        .args([
-            "-std=c99",
-            "-Wall",
-            "-Wextra",
-            "-Werror",
-            "-pedantic",
-            "-c",
-            "-o",
-        ])
-        .arg(tmp("use.o"))
-        .arg(&c)
-        .output()
-        .expect("cc");
-    assert!(
-        cc.status.success(),
-        "{}",
-        String::from_utf8_lossy(&cc.stderr)
-    );
+    common::compile_c(&c, c.parent().expect("temp dir"));
     // The Rust constants compile as a crate with -D warnings.
     let rs = tmp("bounce.rs");
     assert!(run(&[
@@ -104,25 +88,7 @@ fn every_format_renders_and_the_firmware_constants_compile() {
     ])
     .status
     .success());
-    let rustc = Command::new("rustc")
-        .args([
-            "--edition",
-            "2021",
-            "--crate-type",
-            "lib",
-            "-D",
-            "warnings",
-            "-o",
-        ])
-        .arg(tmp("libbounce.rlib"))
-        .arg(&rs)
-        .output()
-        .expect("rustc");
-    assert!(
-        rustc.status.success(),
-        "{}",
-        String::from_utf8_lossy(&rustc.stderr)
-    );
+    common::compile_rust(&rs, rs.parent().expect("temp dir"));
     assert!(std::fs::read_to_string(&rs)
         .expect("rs")
         .contains("pub const MY_TACTILE_BUTTON_WINDOW_TICKS: u32"));
