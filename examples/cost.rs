@@ -6,10 +6,12 @@
 #![cfg_attr(target_os = "none", no_std, no_main)]
 
 #[cfg(target_os = "none")]
+#[path = "common/debouncer_cost.rs"]
+mod debouncers;
+
+#[cfg(target_os = "none")]
 mod firmware {
-    use contact_bounce::{
-        catalogue, Method, Mode, Nodes, State, Tolerance, Windows, DEFAULT_MAX_IMPACTS,
-    };
+    use contact_bounce::{catalogue, Method, Nodes, Tolerance, DEFAULT_MAX_IMPACTS};
     use core::hint::black_box;
     use cortex_m as _;
     use cortex_m_semihosting::debug;
@@ -20,16 +22,6 @@ mod firmware {
     #[no_mangle]
     pub extern "C" fn cost_mark(id: u32) {
         black_box(id);
-    }
-
-    /// 1000 samples of a bouncing input (a 32-bit LFSR, biased to runs).
-    fn samples(mut seed: u32) -> impl Iterator<Item = bool> {
-        (0..1000).map(move |_| {
-            seed ^= seed << 13;
-            seed ^= seed >> 17;
-            seed ^= seed << 5;
-            seed & 0x7 != 0
-        })
     }
 
     #[cortex_m_rt::entry]
@@ -57,25 +49,7 @@ mod firmware {
             }
             cost_mark(3);
         }
-        if let Ok(windows) = Windows::new(black_box(12), black_box(12), Mode::Confirm) {
-            let mut state = State::new(false);
-            cost_mark(4);
-            for s in samples(black_box(0x1234_5678)) {
-                black_box(state.update(black_box(s), &windows));
-            }
-            cost_mark(5);
-        }
-        let mut theirs = debouncr::debounce_16(false);
-        cost_mark(6);
-        for s in samples(black_box(0x1234_5678)) {
-            black_box(theirs.update(black_box(s)));
-        }
-        cost_mark(7);
-        // The loop alone: the samples without a debouncer.
-        for s in samples(black_box(0x1234_5678)) {
-            black_box(s);
-        }
-        cost_mark(8);
+        super::debouncers::run(|id| cost_mark(u32::from(id)), 4);
         debug::exit(debug::EXIT_SUCCESS);
         loop {
             cortex_m::asm::wfi();

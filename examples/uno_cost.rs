@@ -14,6 +14,10 @@ mod avr;
 mod measured;
 
 #[cfg(target_arch = "avr")]
+#[path = "common/debouncer_cost.rs"]
+mod debouncers;
+
+#[cfg(target_arch = "avr")]
 mod firmware {
     /// The marker: the cycles between two calls are one measurement.
     #[inline(never)]

@@ -1,0 +1,40 @@
+// The debouncers' share of the cost examples (cost.rs under QEMU, uno_cost*.rs in simavr):
+// 1000 samples of the same pseudo-random input through our debouncer, through debouncr's
+// 16-sample debouncer, and through the sample loop alone (subtracted by the report), marked
+// `first` .. `first + 4`.
+
+use contact_bounce::{Mode, State, Windows};
+use core::hint::black_box;
+
+/// 1000 samples of a bouncing input (a 32-bit xorshift, biased to runs).
+fn samples(mut seed: u32) -> impl Iterator<Item = bool> {
+    (0..1000).map(move |_| {
+        seed ^= seed << 13;
+        seed ^= seed >> 17;
+        seed ^= seed << 5;
+        seed & 0x7 != 0
+    })
+}
+
+#[inline(always)]
+pub fn run(mark: impl Fn(u8), first: u8) {
+    if let Ok(windows) = Windows::new(black_box(12), black_box(12), Mode::Confirm) {
+        let mut state = State::new(false);
+        mark(first);
+        for s in samples(black_box(0x1234_5678)) {
+            black_box(state.update(black_box(s), &windows));
+        }
+        mark(first + 1);
+    }
+    let mut theirs = debouncr::debounce_16(false);
+    mark(first + 2);
+    for s in samples(black_box(0x1234_5678)) {
+        black_box(theirs.update(black_box(s)));
+    }
+    mark(first + 3);
+    // The loop alone: the samples without a debouncer.
+    for s in samples(black_box(0x1234_5678)) {
+        black_box(s);
+    }
+    mark(first + 4);
+}
