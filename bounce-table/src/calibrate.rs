@@ -27,6 +27,8 @@ pub struct Options {
     pub format: Format,
     /// Intervals shorter than this are unresolved (s).
     pub resolution: f64,
+    /// A quiet interval at least this long ends a burst (s).
+    pub burst_gap: f64,
     /// A change more than this after the previous one starts a new event (s); streams only.
     pub quiet: f64,
     /// The VCD signal.
@@ -60,6 +62,7 @@ pub fn options(args: &[String]) -> Result<Options, String> {
     let mut file: Option<String> = None;
     let mut format = None;
     let mut resolution = 3e-6;
+    let mut burst_gap = 5e-3;
     let mut quiet = 0.2;
     let mut signal = None;
     let mut polarity = Polarity::ActiveLow;
@@ -81,6 +84,7 @@ pub fn options(args: &[String]) -> Result<Options, String> {
                 });
             }
             "--resolution" => resolution = seconds("--resolution", &value("--resolution")?)?,
+            "--burst-gap" => burst_gap = seconds("--burst-gap", &value("--burst-gap")?)?,
             "--quiet" => quiet = seconds("--quiet", &value("--quiet")?)?,
             "--signal" => signal = Some(value("--signal")?),
             "--active-high" => polarity = Polarity::ActiveHigh,
@@ -130,6 +134,7 @@ pub fn options(args: &[String]) -> Result<Options, String> {
         file,
         format,
         resolution,
+        burst_gap,
         quiet,
         signal,
         polarity,
@@ -181,15 +186,16 @@ fn q(v: &[f64], p: f64, show: impl Fn(f64) -> String) -> String {
 /// The events described, per switch and kind, in capture order.
 pub type Groups<'a> = BTreeMap<(&'a str, Kind), Vec<capture::Description>>;
 
-/// Describes every event at `resolution` and groups them per switch and kind.
+/// Describes every event at `resolution` (a quiet interval of `burst_gap` ending a burst) and
+/// groups them per switch and kind.
 #[must_use]
-pub fn group(events: &[Event], resolution: f64) -> Groups<'_> {
+pub fn group(events: &[Event], resolution: f64, burst_gap: f64) -> Groups<'_> {
     let mut groups: Groups<'_> = BTreeMap::new();
     for e in events {
         groups
             .entry((e.switch.as_str(), e.kind))
             .or_default()
-            .push(e.describe(resolution));
+            .push(e.describe(resolution, burst_gap));
     }
     groups
 }
@@ -245,6 +251,12 @@ pub fn describe(groups: &Groups<'_>, resolution: f64) -> String {
     out
 }
 
+/// The resolved flights of an event's first burst: the impact model describes one closing, so
+/// a later burst's flights (and the quiet interval before it) are not its flights.
+fn first_burst(d: &capture::Description) -> &[f64] {
+    d.flights.get(..d.first_burst_flights).unwrap_or(&d.flights)
+}
+
 /// What the impact model can take from a capture's timing: the restitution coefficient from
 /// the ratio of successive resolved flights (each flight lasts in proportion to the speed that
 /// starts it, for small j: `t_f = 2 R v / (Omega^2 |Delta|)`, so successive flights shrink by
@@ -271,12 +283,12 @@ impl ImpactFit {
     pub fn new(d: &[&capture::Description]) -> Self {
         let ratios = sorted(
             d.iter()
-                .flat_map(|x| x.flights.windows(2).map(|w| w[1] / w[0]))
+                .flat_map(|x| first_burst(x).windows(2).map(|w| w[1] / w[0]))
                 .collect(),
         );
         let firsts = sorted(
             d.iter()
-                .filter_map(|x| x.flights.first().copied())
+                .filter_map(|x| first_burst(x).first().copied())
                 .collect(),
         );
         #[allow(clippy::cast_precision_loss)]
@@ -307,7 +319,214 @@ impl ImpactFit {
     #[must_use]
     pub fn bounce(&self, d: &capture::Description) -> Option<f64> {
         let r = self.restitution.filter(|r| *r < 1.0)?;
-        Some(d.flights.first().map_or(0.0, |f| f / (1.0 - r)))
+        Some(first_burst(d).first().map_or(0.0, |f| f / (1.0 - r)))
+    }
+}
+
+/// A log-normal distribution fitted to positive durations: `mu` and `sigma` the mean and the
+/// sample standard deviation of their logarithms (the maximum-likelihood fit, with the unbiased
+/// variance). Bounce durations are positive and spread over decades, which is what a log-normal
+/// describes; whether it describes a given capture is for the held-out check to say.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LogNormal {
+    /// Mean of ln t (t in seconds).
+    pub mu: f64,
+    /// Standard deviation of ln t (0 when every duration is the same).
+    pub sigma: f64,
+    /// Durations fitted.
+    pub n: usize,
+}
+
+/// Fewer durations than this give no log-normal: two points fix a spread but say nothing of
+/// its shape.
+pub const MIN_FIT: usize = 3;
+
+impl LogNormal {
+    /// The fit to `t`; `None` with fewer than [`MIN_FIT`] durations or any not positive and
+    /// finite.
+    #[must_use]
+    pub fn fit(t: &[f64]) -> Option<Self> {
+        if t.len() < MIN_FIT || t.iter().any(|x| !(x.is_finite() && *x > 0.0)) {
+            return None;
+        }
+        #[allow(clippy::cast_precision_loss)]
+        let n = t.len() as f64;
+        let mu = t.iter().map(|x| x.ln()).sum::<f64>() / n;
+        let var = t.iter().map(|x| (x.ln() - mu).powi(2)).sum::<f64>() / (n - 1.0);
+        Some(Self {
+            mu,
+            sigma: var.sqrt(),
+            n: t.len(),
+        })
+    }
+
+    /// P(duration <= t).
+    #[must_use]
+    pub fn cdf(&self, t: f64) -> f64 {
+        if t <= 0.0 {
+            return 0.0;
+        }
+        let x = t.ln() - self.mu;
+        if self.sigma <= 0.0 {
+            return if x >= 0.0 { 1.0 } else { 0.0 };
+        }
+        0.5 * libm::erfc(-x / (self.sigma * core::f64::consts::SQRT_2))
+    }
+
+    /// The median, e^mu (s).
+    #[must_use]
+    pub fn median(&self) -> f64 {
+        self.mu.exp()
+    }
+}
+
+/// The fitted bounce model of one switch and kind: the impact model where it holds, and
+/// empirical terms for what it does not produce. Each event is one of three kinds:
+///
+/// - clean (no bounce), with the share observed;
+/// - one burst: log-normal in its duration. Where the impact model holds, each event's burst
+///   is its first resolved flight over 1 - R (the flights the model sums), times 1 + the
+///   closed share (the median of dwell and chatter time over flight time: a Newton impact has
+///   no contact time, a real contact dwells and chatters between flights); elsewhere the
+///   observed burst durations;
+/// - a late burst (the contact bounced again after settling for at least the burst gap):
+///   log-normal in the event's whole bounce, with the share observed.
+///
+/// The model's quantiles are those of that mixture; with few events its log-normal tails go
+/// past the largest event observed, which a window wants.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BounceModel {
+    /// Events fitted.
+    pub events: usize,
+    /// Share of events with no bounce.
+    pub clean: f64,
+    /// Share with one burst.
+    pub single: f64,
+    /// Share with a late burst.
+    pub late: f64,
+    /// The one-burst events' bounce.
+    pub burst: Option<LogNormal>,
+    /// The late-burst events' bounce.
+    pub late_bounce: Option<LogNormal>,
+    /// Whether the burst term is the impact model's (else the observed bursts').
+    pub impact: bool,
+    /// Median (dwell + chatter time) / flight time over the one-burst events with a resolved
+    /// flight.
+    pub closed_share: Option<f64>,
+}
+
+impl BounceModel {
+    /// The model fitted to described events.
+    #[must_use]
+    pub fn fit(d: &[&capture::Description]) -> Self {
+        let fit = ImpactFit::new(d);
+        let clean: Vec<_> = d.iter().filter(|x| x.bounce <= 0.0).collect();
+        let single: Vec<_> = d
+            .iter()
+            .filter(|x| x.bounce > 0.0 && x.bursts <= 1)
+            .collect();
+        let late: Vec<f64> = d
+            .iter()
+            .filter(|x| x.bounce > 0.0 && x.bursts > 1)
+            .map(|x| x.bounce)
+            .collect();
+        let closed_share = nearest_rank(
+            &sorted(
+                single
+                    .iter()
+                    .filter_map(|x| {
+                        let flying: f64 = x.flights.iter().sum();
+                        let closed: f64 = x.dwells.iter().sum::<f64>() + x.chatter_time;
+                        (flying > 0.0).then(|| closed / flying)
+                    })
+                    .collect(),
+            ),
+            0.5,
+        );
+        let impact = fit.holds();
+        let burst: Vec<f64> = single
+            .iter()
+            .map(|x| match (impact, fit.bounce(x)) {
+                (true, Some(b)) if b > 0.0 => b * (1.0 + closed_share.unwrap_or(0.0)),
+                _ => x.bounce,
+            })
+            .collect();
+        #[allow(clippy::cast_precision_loss)]
+        let share = |k: usize| {
+            if d.is_empty() {
+                0.0
+            } else {
+                k as f64 / d.len() as f64
+            }
+        };
+        Self {
+            events: d.len(),
+            clean: share(clean.len()),
+            single: share(single.len()),
+            late: share(late.len()),
+            burst: LogNormal::fit(&burst),
+            late_bounce: LogNormal::fit(&late),
+            impact,
+            closed_share,
+        }
+    }
+
+    /// The bouncing parts with their shares; `None` if a part that occurs could not be fitted.
+    fn parts(&self) -> Option<Vec<(f64, LogNormal)>> {
+        [(self.single, self.burst), (self.late, self.late_bounce)]
+            .into_iter()
+            .filter(|(w, _)| *w > 0.0)
+            .map(|(w, l)| l.map(|l| (w, l)))
+            .collect()
+    }
+
+    /// P(bounce <= t); `None` if a part that occurs could not be fitted.
+    #[must_use]
+    pub fn cdf(&self, t: f64) -> Option<f64> {
+        let parts = self.parts()?;
+        Some(self.clean + parts.iter().map(|(w, l)| w * l.cdf(t)).sum::<f64>())
+    }
+
+    /// The `q` quantile of the bounce (s, 0 if at least a share `q` is clean): the least t
+    /// with P(bounce <= t) >= q, by bisection in ln t to 1e-12 relative. `None` if a part that
+    /// occurs could not be fitted, or if there are no events.
+    #[must_use]
+    pub fn quantile(&self, q: f64) -> Option<f64> {
+        if self.events == 0 {
+            return None;
+        }
+        let parts = self.parts()?;
+        if q <= self.clean || parts.is_empty() {
+            return Some(0.0);
+        }
+        // The cdf reaches its total (1 up to rounding) 40 standard deviations past the
+        // largest median; q is asked to the total so rounding cannot leave it unreachable.
+        let total = self.clean + parts.iter().map(|(w, _)| w).sum::<f64>();
+        let q = q.min(total);
+        let spread = parts.iter().map(|(_, l)| l.sigma).fold(0.0, f64::max) * 40.0 + 1.0;
+        let mut lo = parts
+            .iter()
+            .map(|(_, l)| l.mu)
+            .fold(f64::INFINITY, f64::min)
+            - spread;
+        let mut hi = parts
+            .iter()
+            .map(|(_, l)| l.mu)
+            .fold(f64::NEG_INFINITY, f64::max)
+            + spread;
+        let at = |x: f64| self.clean + parts.iter().map(|(w, l)| w * l.cdf(x.exp())).sum::<f64>();
+        for _ in 0..200 {
+            if hi - lo <= 1e-12 * hi.abs().max(1.0) {
+                break;
+            }
+            let mid = 0.5 * (lo + hi);
+            if at(mid) >= q {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        Some(hi.exp())
     }
 }
 
@@ -327,6 +546,8 @@ pub struct Validation {
     pub empirical: [Option<f64>; 3],
     /// Predicted / observed with the impact model (`None` where it predicts nothing).
     pub model: [Option<f64>; 3],
+    /// Predicted / observed with the fitted [`BounceModel`].
+    pub fitted: [Option<f64>; 3],
 }
 
 fn ratio(p: Option<f64>, o: Option<f64>) -> Option<f64> {
@@ -344,6 +565,7 @@ fn validate(
     check: &[&capture::Description],
 ) -> Validation {
     let model = ImpactFit::new(fit);
+    let fitted = BounceModel::fit(fit);
     let observed = sorted(check.iter().map(|x| x.bounce).collect());
     let train = sorted(fit.iter().map(|x| x.bounce).collect());
     let modelled: Option<Vec<f64>> = fit.iter().map(|x| model.bounce(x)).collect();
@@ -356,6 +578,7 @@ fn validate(
         empirical: VALIDATION_QUANTILES.map(|q| ratio(at(&train, q), at(&observed, q))),
         model: VALIDATION_QUANTILES
             .map(|q| ratio(modelled.as_deref().and_then(|m| at(m, q)), at(&observed, q))),
+        fitted: VALIDATION_QUANTILES.map(|q| ratio(fitted.quantile(q), at(&observed, q))),
     }
 }
 
@@ -366,14 +589,10 @@ pub fn validations(d: &[&capture::Description], seed: u64) -> [Validation; 2] {
     let half = d.len() / 2;
     let (first, second) = d.split_at(half);
     let mut shuffled = d.to_vec();
-    // Fisher-Yates with xorshift64*: the same split for the same seed everywhere.
-    let mut state = seed | 1;
+    // Fisher-Yates: the same split for the same seed everywhere.
+    let mut rng = crate::spreads::SplitMix(seed);
     for i in (1..shuffled.len()).rev() {
-        state ^= state >> 12;
-        state ^= state << 25;
-        state ^= state >> 27;
-        let r = state.wrapping_mul(0x2545_F491_4F6C_DD1D);
-        let j = usize::try_from(r % (i as u64 + 1)).unwrap_or(0);
+        let j = usize::try_from(rng.next_u64() % (i as u64 + 1)).unwrap_or(0);
         shuffled.swap(i, j);
     }
     let (a, b) = shuffled.split_at(half);
@@ -383,12 +602,36 @@ pub fn validations(d: &[&capture::Description], seed: u64) -> [Validation; 2] {
     ]
 }
 
-/// A debounce window from a capture: the `percentile` of the observed bounce, widened by the
-/// worst under-prediction of the held-out checks at the nearest checked quantile.
-#[must_use]
-pub fn window(d: &[&capture::Description], percentile: f64, checks: &[Validation]) -> Option<f64> {
-    let all = sorted(d.iter().map(|x| x.bounce).collect());
-    let base = nearest_rank(&all, percentile)?;
+/// A debounce window from a capture, two ways, and the one recommended.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Window {
+    /// The percentile of the observed bounce, widened by the worst held-out under-prediction
+    /// of the empirical quantiles at the nearest checked quantile (s).
+    pub empirical: Option<f64>,
+    /// The percentile of the [`BounceModel`] fitted to every event, widened by the model's
+    /// worst held-out under-prediction at the nearest checked quantile (s).
+    pub fitted: Option<f64>,
+}
+
+impl Window {
+    /// The larger of the two: a window must cover the bounce, and each estimate has only the
+    /// capture's events behind it.
+    #[must_use]
+    pub fn recommended(&self) -> Option<f64> {
+        match (self.empirical, self.fitted) {
+            (Some(a), Some(b)) => Some(a.max(b)),
+            (a, b) => a.or(b),
+        }
+    }
+}
+
+/// The worst under-prediction (observed / predicted, at least 1) among `ratios` at the checked
+/// quantile nearest `percentile`.
+fn worst(
+    checks: &[Validation],
+    percentile: f64,
+    ratios: fn(&Validation) -> &[Option<f64>; 3],
+) -> f64 {
     let nearest = VALIDATION_QUANTILES
         .iter()
         .enumerate()
@@ -398,11 +641,24 @@ pub fn window(d: &[&capture::Description], percentile: f64, checks: &[Validation
                 .total_cmp(&(b.1 - percentile).abs())
         })
         .map_or(0, |(i, _)| i);
-    let worst = checks
+    checks
         .iter()
-        .filter_map(|v| v.empirical[nearest])
-        .fold(1.0_f64, |w, r| if r > 0.0 { w.max(1.0 / r) } else { w });
-    Some(base * worst)
+        .filter_map(|v| ratios(v)[nearest])
+        .fold(1.0_f64, |w, r| if r > 0.0 { w.max(1.0 / r) } else { w })
+}
+
+/// The windows of one switch and kind at `percentile`, from its events and their held-out
+/// checks.
+#[must_use]
+pub fn window(d: &[&capture::Description], percentile: f64, checks: &[Validation]) -> Window {
+    let all = sorted(d.iter().map(|x| x.bounce).collect());
+    Window {
+        empirical: nearest_rank(&all, percentile)
+            .map(|b| b * worst(checks, percentile, |v| &v.empirical)),
+        fitted: BounceModel::fit(d)
+            .quantile(percentile)
+            .map(|b| b * worst(checks, percentile, |v| &v.fitted)),
+    }
 }
 
 fn ratio_text(r: Option<f64>) -> String {
@@ -413,29 +669,55 @@ fn ratio_text(r: Option<f64>) -> String {
     }
 }
 
+fn three(r: &[Option<f64>; 3]) -> String {
+    r.iter()
+        .map(|x| ratio_text(*x))
+        .collect::<Vec<_>>()
+        .join(" / ")
+}
+
+fn lognormal_text(l: Option<LogNormal>) -> String {
+    l.map_or_else(
+        || "-".to_owned(),
+        |l| format!("{} x/ {:.2}", time(l.median()), l.sigma.exp()),
+    )
+}
+
 /// The fit, the held-out checks and the windows (markdown), after the description.
 #[must_use]
 pub fn assess(groups: &Groups<'_>, percentile: f64, seed: u64) -> String {
     let mut out = String::from(
-        "\n## Impact-model fit\n\nR: the median ratio of successive resolved flights (quartiles beside it); \
+        "\n## Impact-model fit\n\nR: the median ratio of successive resolved flights of the first burst (quartiles beside it); \
          the model holds when at least 5 pairs exist, 80 % of ratios are below 1 and the upper quartile too. \
          Scale v0 / (Omega^2 |Delta|) = first flight / (2 R); Omega, Delta and v0 apart need the closing \
          speed, the preload force or the resonance measured separately.\n\n\
          | switch | kind | flight pairs | R (median) | quartiles | ratios below 1 | first flight P50 | v0 / (Omega^2 \\|Delta\\|) | impact model holds |\n\
          |---|---|---:|---:|---:|---:|---:|---:|---|\n",
     );
+    let mut model = String::from(
+        "\n## Fitted bounce model\n\nEach event is clean, one burst, or bounces again after a quiet interval of at \
+         least the burst gap (a late burst). Bursts and late-burst bounces are log-normal (median x/ geometric \
+         spread). The burst term is the impact model's (first flight / (1 - R), times 1 + the closed share: \
+         the dwell and chatter a Newton impact does not have) where it holds, else the observed bursts'. \
+         Last column: the model's quantiles over the capture's, on every event.\n\n\
+         | switch | kind | events | clean | one burst | burst bounce | closed share | late burst | late bounce | burst term | model / observed P50 / P90 / P99 |\n\
+         |---|---|---:|---:|---:|---:|---:|---:|---:|---|---:|\n",
+    );
     let mut checks = String::from(
         "\n## Held-out check\n\nFit on one half, predict the other half's bounce P50 / P90 / P99: \
-         predicted / observed, by the empirical part (the fitted half's own quantiles) and by the \
-         impact model (each event's first flight / (1 - R); `-` where R >= 1 or nothing is observed).\n\n\
-         | switch | kind | split | events | observed P50 / P90 / P99 | empirical | impact model |\n\
-         |---|---|---|---:|---:|---:|---:|\n",
+         predicted / observed, by the empirical part alone (the fitted half's own quantiles), by the \
+         impact model alone (each event's first flight / (1 - R); `-` where R >= 1 or nothing is observed), \
+         and by the fitted bounce model (`-` where a part that occurs has fewer than 3 events to fit).\n\n\
+         | switch | kind | split | events | observed P50 / P90 / P99 | empirical | impact model | fitted model |\n\
+         |---|---|---|---:|---:|---:|---:|---:|\n",
     );
     let mut windows = format!(
-        "\n## Windows\n\nP{} of the observed bounce, widened by the worst under-prediction of the \
-         held-out checks at that quantile.\n\n| switch | kind | window | explained by |\n|---|---|---:|---|\n",
-        percentile * 100.0
+        "\n## Windows\n\nP{p} of the observed bounce, and P{p} of the fitted model, each widened by its own worst \
+         under-prediction in the held-out checks at that quantile; the window is the larger.\n\n\
+         | switch | kind | empirical | fitted model | window | explained by |\n|---|---|---:|---:|---:|---|\n",
+        p = percentile * 100.0
     );
+    let pct = |x: f64| format!("{:.0} %", x * 100.0);
     for ((switch, kind), d) in groups {
         let refs: Vec<&capture::Description> = d.iter().collect();
         let fit = ImpactFit::new(&refs);
@@ -455,14 +737,25 @@ pub fn assess(groups: &Groups<'_>, percentile: f64, seed: u64) -> String {
             scale.map_or_else(|| "-".to_owned(), |s| format!("{s:.3e} s")),
             if fit.holds() { "yes" } else { "no" },
         ));
+        let m = BounceModel::fit(&refs);
+        let all = sorted(refs.iter().map(|x| x.bounce).collect());
+        let in_sample = VALIDATION_QUANTILES.map(|q| ratio(m.quantile(q), nearest_rank(&all, q)));
+        model.push_str(&format!(
+            "| {switch} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
+            kind.name(),
+            m.events,
+            pct(m.clean),
+            pct(m.single),
+            lognormal_text(m.burst),
+            m.closed_share
+                .map_or_else(|| "-".to_owned(), |c| format!("{c:.2}")),
+            pct(m.late),
+            lognormal_text(m.late_bounce),
+            if m.impact { "impact model" } else { "observed" },
+            three(&in_sample),
+        ));
         let v = validations(&refs, seed);
         for c in &v {
-            let three = |r: &[Option<f64>; 3]| {
-                r.iter()
-                    .map(|x| ratio_text(*x))
-                    .collect::<Vec<_>>()
-                    .join(" / ")
-            };
             let observed = c
                 .observed
                 .iter()
@@ -470,27 +763,32 @@ pub fn assess(groups: &Groups<'_>, percentile: f64, seed: u64) -> String {
                 .collect::<Vec<_>>()
                 .join(" / ");
             checks.push_str(&format!(
-                "| {switch} | {} | {} | {} + {} | {observed} | {} | {} |\n",
+                "| {switch} | {} | {} | {} + {} | {observed} | {} | {} | {} |\n",
                 kind.name(),
                 c.split,
                 c.sizes.0,
                 c.sizes.1,
                 three(&c.empirical),
                 three(&c.model),
+                three(&c.fitted),
             ));
         }
         let explained = if fit.holds() {
-            "impact model and empirical"
+            "impact model and empirical terms"
         } else {
-            "empirical only"
+            "empirical terms only"
         };
+        let w = window(&refs, percentile, &v);
+        let show = |x: Option<f64>| x.map_or_else(|| "-".to_owned(), time);
         windows.push_str(&format!(
-            "| {switch} | {} | {} | {explained} |\n",
+            "| {switch} | {} | {} | {} | {} | {explained} |\n",
             kind.name(),
-            window(&refs, percentile, &v).map_or_else(|| "-".to_owned(), time),
+            show(w.empirical),
+            show(w.fitted),
+            show(w.recommended()),
         ));
     }
-    out + &checks + &windows
+    out + &model + &checks + &windows
 }
 
 /// The windows as C `#define`s or Rust constants (nanoseconds, rounded up).
@@ -512,7 +810,7 @@ pub fn export(groups: &Groups<'_>, percentile: f64, seed: u64, rust: bool) -> St
     for ((switch, kind), d) in groups {
         let refs: Vec<&capture::Description> = d.iter().collect();
         let v = validations(&refs, seed);
-        let Some(w) = window(&refs, percentile, &v) else {
+        let Some(w) = window(&refs, percentile, &v).recommended() else {
             continue;
         };
         #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
@@ -531,8 +829,8 @@ pub fn export(groups: &Groups<'_>, percentile: f64, seed: u64, rust: bool) -> St
 }
 
 /// The SVG of one switch and kind: the observed bounce's cumulative distribution against the
-/// impact model's (each event's first flight / (1 - R), fitted on all events; absent when R >= 1),
-/// on a log10 time axis. Clean edges (no bounce) are left out and counted in the title.
+/// fitted [`BounceModel`]'s and, where it holds, the impact model's alone (each event's first
+/// flight / (1 - R), fitted on all events), on a log10 time axis. Clean edges (no bounce) are left out and counted in the title.
 #[must_use]
 pub fn plot(switch: &str, kind: Kind, d: &[capture::Description]) -> String {
     let refs: Vec<&capture::Description> = d.iter().collect();
@@ -552,18 +850,44 @@ pub fn plot(switch: &str, kind: Kind, d: &[capture::Description]) -> String {
     };
     let observed = cdf(d.iter().map(|x| x.bounce).collect());
     let clean = d.len() - observed.len();
+    // The fitted model's distribution of the bouncing events, over the observed decades and
+    // one more each side.
+    let fitted = BounceModel::fit(&refs);
+    let span = observed
+        .first()
+        .zip(observed.last())
+        .map(|(a, b)| (a.0 - 1.0, b.0 + 1.0));
+    let curve: Option<Vec<(f64, f64)>> = span.and_then(|(a, b)| {
+        (0..=200)
+            .map(|i| {
+                let x = a + (b - a) * f64::from(i) / 200.0;
+                let p = fitted.cdf(10f64.powf(x))?;
+                Some((x, (p - fitted.clean) / (1.0 - fitted.clean)))
+            })
+            .collect()
+    });
     let mut series = vec![crate::plot::Series {
         label: "observed",
         colour: "#1f77b4",
         points: observed,
         dots: true,
     }];
+    // Where the flights do not shrink, R near 1 sends the impact model's sums off by decades:
+    // drawn, it would only squash the axis.
     let modelled: Option<Vec<f64>> = refs.iter().map(|x| fit.bounce(x)).collect();
-    if let Some(m) = modelled {
+    if let Some(m) = modelled.filter(|_| fit.holds()) {
         series.push(crate::plot::Series {
             label: "impact model",
             colour: "#d62728",
             points: cdf(m),
+            dots: false,
+        });
+    }
+    if let Some(points) = curve {
+        series.push(crate::plot::Series {
+            label: "fitted model",
+            colour: "#2ca02c",
+            points,
             dots: false,
         });
     }

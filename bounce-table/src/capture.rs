@@ -560,21 +560,39 @@ pub struct Description {
     pub dwells: Vec<f64>,
     /// Intervals shorter than `resolution` (their times are not resolved).
     pub chatter: usize,
+    /// The time those unresolved intervals add up to (s; as logged, so only bounded by
+    /// `chatter * resolution`).
+    pub chatter_time: f64,
+    /// Bursts: runs of changes separated by a quiet interval of at least the burst gap. 0 for
+    /// an event with no change, 1 for a single burst; more means the contact bounced again
+    /// after settling for at least the gap.
+    pub bursts: usize,
+    /// How many of `flights` belong to the first burst.
+    pub first_burst_flights: usize,
 }
 
 impl Event {
-    /// The event's bounce at an instrument resolution (s).
+    /// The event's bounce at an instrument resolution (s); a quiet interval at least
+    /// `burst_gap` long (s) ends a burst.
     #[must_use]
-    pub fn describe(&self, resolution: f64) -> Description {
+    pub fn describe(&self, resolution: f64, burst_gap: f64) -> Description {
         let mut flights = Vec::new();
         let mut dwells = Vec::new();
         let mut chatter = 0;
+        let mut chatter_time = 0.0;
+        let mut bursts = usize::from(!self.changes.is_empty());
+        let mut first_burst_flights = None;
         // After the first change the contact is closed for a press, open for a release.
         let mut closed = self.kind == Kind::Press;
         for w in self.changes.windows(2) {
             let d = w[1] - w[0];
+            if d >= burst_gap {
+                bursts += 1;
+                first_burst_flights.get_or_insert(flights.len());
+            }
             if d < resolution {
                 chatter += 1;
+                chatter_time += d;
             } else if closed {
                 dwells.push(d);
             } else {
@@ -589,9 +607,12 @@ impl Event {
         Description {
             bounce,
             transitions: self.changes.len(),
+            first_burst_flights: first_burst_flights.unwrap_or(flights.len()),
             flights,
             dwells,
             chatter,
+            chatter_time,
+            bursts,
         }
     }
 }
@@ -623,13 +644,39 @@ mod tests {
             // closed 10 us, open 1 us (chatter), closed 20 us, open 30 us, closed.
             changes: vec![0.0, 10e-6, 11e-6, 31e-6, 61e-6],
         };
-        let d = e.describe(3e-6);
+        let d = e.describe(3e-6, 1.0);
         assert_eq!(d.transitions, 5);
         assert_eq!(d.chatter, 1);
         assert_eq!(d.dwells.len(), 2);
         assert_eq!(d.flights.len(), 1);
         assert!((d.flights[0] - 30e-6).abs() < 1e-12);
         assert!((d.bounce - 61e-6).abs() < 1e-12);
+        assert!((d.chatter_time - 1e-6).abs() < 1e-12);
+        assert_eq!((d.bursts, d.first_burst_flights), (1, 1));
+    }
+
+    #[test]
+    fn a_quiet_interval_of_the_burst_gap_ends_a_burst() {
+        let e = Event {
+            switch: "sw".into(),
+            origin: String::new(),
+            kind: Kind::Release,
+            // open 20 us, closed 10 us, open 5 ms (quiet), closed 30 us, open 2 ms (quiet),
+            // closed 40 us, open.
+            changes: vec![0.0, 20e-6, 30e-6, 5.03e-3, 5.06e-3, 7.06e-3, 7.1e-3],
+        };
+        let d = e.describe(3e-6, 1e-3);
+        assert_eq!(d.bursts, 3);
+        assert_eq!(d.first_burst_flights, 1);
+        assert_eq!(d.flights.len(), 3);
+        // A gap wider than every interval: one burst, all its flights.
+        let d = e.describe(3e-6, 1.0);
+        assert_eq!((d.bursts, d.first_burst_flights), (1, 3));
+        let none = Event {
+            changes: vec![],
+            ..e.clone()
+        };
+        assert_eq!(none.describe(3e-6, 1e-3).bursts, 0);
     }
 
     #[test]

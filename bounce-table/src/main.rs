@@ -16,8 +16,9 @@ use bounce_table::{calibrate, eval, plot, scene_input::SceneInput};
 const USAGE: &str = "usage: bounce-table [OPTIONS] [SCENE_FILE]
        bounce-table eval [--method exact|map|averaged|closed|auto] [--tolerance X]
                          [--precision f32|f64] [--nodes N] < scenes.jsonl
-       bounce-table calibrate [--format jsonl|csv|vcd] [--resolution S] [--quiet S]
-                              [--signal NAME] [--active-high] [--skip-section NAME]
+       bounce-table calibrate [--format jsonl|csv|vcd] [--resolution S] [--burst-gap S]
+                              [--quiet S] [--signal NAME] [--active-high]
+                              [--skip-section NAME]
                               [--percentile P] [--seed N] [--export c|rust] [--plot DIR]
                               CAPTURE
 
@@ -43,6 +44,7 @@ transitions, resolved flights and dwells, chatter), fits the impact model, check
 empirical quantiles on held-out halves, and recommends windows. High = open unless
 --active-high.
   --resolution S       intervals shorter than S are chatter, not timed (3e-6)
+  --burst-gap S        a quiet interval of S ends a burst; later bursts are late bounce (5e-3)
   --quiet S            in CSV/VCD streams, a gap longer than S starts a new event (0.2)
   --signal NAME        the VCD signal (default: the only 1-bit one)
   --skip-section NAME  leave out a JSON Lines section (repeatable)
@@ -165,7 +167,7 @@ fn main() -> ExitCode {
         };
         return match calibrate::load(&options) {
             Ok((events, skipped)) => {
-                let groups = calibrate::group(&events, options.resolution);
+                let groups = calibrate::group(&events, options.resolution, options.burst_gap);
                 if let Some(rust) = options.export {
                     print!(
                         "{}",

@@ -186,11 +186,14 @@ impl Template {
     }
 }
 
-/// SplitMix64: small, fast and good enough for Monte Carlo draws.
-struct SplitMix(u64);
+/// SplitMix64: small, fast and good enough for Monte Carlo draws and seeded splits; the same
+/// sequence for the same seed everywhere.
+#[derive(Debug, Clone)]
+pub struct SplitMix(pub u64);
 
 impl SplitMix {
-    fn next(&mut self) -> u64 {
+    /// The next 64 random bits.
+    pub fn next_u64(&mut self) -> u64 {
         self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
         let mut z = self.0;
         z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
@@ -198,9 +201,9 @@ impl SplitMix {
         z ^ (z >> 31)
     }
     /// Uniform on [0, 1).
-    fn unit(&mut self) -> f64 {
+    pub fn unit(&mut self) -> f64 {
         #[allow(clippy::cast_precision_loss)]
-        let u = (self.next() >> 11) as f64 / (1_u64 << 53) as f64;
+        let u = (self.next_u64() >> 11) as f64 / (1_u64 << 53) as f64;
         u
     }
 }

@@ -5,16 +5,20 @@
 
 mod common;
 
-use bounce_table::calibrate::{group, validations, ImpactFit};
+use bounce_table::calibrate::{group, validations, BounceModel, ImpactFit, LogNormal};
 use bounce_table::capture::{Event, Kind};
+use bounce_table::spreads::SplitMix;
 use host_tests::reference::{simulate_observed, OneBody, DEFAULT_BUDGET};
 
 const OMEGA: f64 = 2.0 * std::f64::consts::PI * 1000.0;
 const DELTA: f64 = -1e-4;
+/// The burst gap: the default of `calibrate`.
+const GAP: f64 = 5e-3;
 
-/// A press of the switch: the impact times from the reference, each a close and an instant
-/// reopening (a zero-length closed interval, below any resolution).
-fn press(restitution: f64, closing_speed: f64, start: f64) -> Event {
+/// A press of the switch: the impact times from the reference, the contact closed at each
+/// impact for `dwell` times the flight that follows it, then open for that flight. `dwell = 0`
+/// is a Newton impact (a zero-length closed interval, below any resolution).
+fn press_with_dwell(restitution: f64, closing_speed: f64, start: f64, dwell: f64) -> Event {
     let scene = OneBody {
         omega: OMEGA,
         delta: DELTA,
@@ -23,13 +27,19 @@ fn press(restitution: f64, closing_speed: f64, start: f64) -> Event {
         closing_speed,
         threshold: None,
     };
-    let mut changes = Vec::new();
-    simulate_observed(&scene, DEFAULT_BUDGET, |t, _| {
-        changes.push(start + t);
-        changes.push(start + t);
-    })
-    .expect("the reference simulates it");
-    changes.pop(); // the contact stays closed after the last resolved impact
+    let mut impacts = Vec::new();
+    simulate_observed(&scene, DEFAULT_BUDGET, |t, _| impacts.push(t))
+        .expect("the reference simulates it");
+    let mut now = start;
+    let mut changes = vec![now];
+    for w in impacts.windows(2) {
+        let flight = w[1] - w[0];
+        now += dwell * flight;
+        changes.push(now);
+        now += flight;
+        changes.push(now);
+    }
+    // The contact stays closed after the last resolved impact.
     Event {
         switch: "synthetic".into(),
         origin: String::new(),
@@ -38,11 +48,15 @@ fn press(restitution: f64, closing_speed: f64, start: f64) -> Event {
     }
 }
 
+fn press(restitution: f64, closing_speed: f64, start: f64) -> Event {
+    press_with_dwell(restitution, closing_speed, start, 0.0)
+}
+
 #[test]
 fn the_fit_recovers_restitution_and_scale_from_a_newton_switch() {
     for (r, v0) in [(0.7, 0.01), (0.5, 0.02), (0.9, 0.005)] {
         let events: Vec<Event> = (0..10).map(|i| press(r, v0, f64::from(i))).collect();
-        let groups = group(&events, 1e-12);
+        let groups = group(&events, 1e-12, GAP);
         let d: Vec<_> = groups.values().flatten().collect();
         let fit = ImpactFit::new(&d);
         // A preload flight lasts (2 / Omega) atan(j) with j = v / (Omega |Delta|), so the ratio
@@ -97,7 +111,7 @@ fn flights_that_do_not_shrink_are_not_called_an_impact_model() {
             changes: changes.iter().map(|t| t + f64::from(i)).collect(),
         })
         .collect();
-    let groups = group(&events, 1e-6);
+    let groups = group(&events, 1e-6, GAP);
     let d: Vec<_> = groups.values().flatten().collect();
     let fit = ImpactFit::new(&d);
     assert!(!fit.holds(), "{fit:?}");
@@ -106,7 +120,7 @@ fn flights_that_do_not_shrink_are_not_called_an_impact_model() {
 #[test]
 fn exported_windows_compile_as_c_and_rust() {
     let events: Vec<Event> = (0..6).map(|i| press(0.7, 0.01, f64::from(i))).collect();
-    let groups = group(&events, 1e-12);
+    let groups = group(&events, 1e-12, GAP);
     let dir = std::env::temp_dir().join(format!("calibrate-export-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let header = dir.join("windows.h");
@@ -133,11 +147,15 @@ fn exported_windows_compile_as_c_and_rust() {
     )
     .unwrap();
     common::compile_rust(&rs, &dir);
-    // The window is the bounce of these identical presses (nanoseconds, rounded up).
-    let bounce = groups.values().flatten().next().unwrap().bounce;
+    // The window exported is the recommended one (nanoseconds, rounded up), at least the
+    // bounce of these identical presses.
+    let d: Vec<_> = groups.values().flatten().collect();
+    let window = bounce_table::calibrate::window(&d, 0.99, &validations(&d, 1));
+    let recommended = window.recommended().unwrap();
+    assert!(recommended >= d[0].bounce && recommended >= window.fitted.unwrap());
     let want = format!(
         "SYNTHETIC_PRESS_WINDOW_NS: u64 = {};",
-        (bounce * 1e9).ceil()
+        (recommended * 1e9).ceil()
     );
     assert!(constants.contains(&want), "{constants}");
 }
@@ -145,17 +163,174 @@ fn exported_windows_compile_as_c_and_rust() {
 #[test]
 fn the_plot_draws_the_observed_and_the_modelled_distribution() {
     let events: Vec<Event> = (0..6).map(|i| press(0.7, 0.01, f64::from(i))).collect();
-    let groups = group(&events, 1e-12);
+    let groups = group(&events, 1e-12, GAP);
     let ((switch, kind), d) = groups.iter().next().unwrap();
     let svg = bounce_table::calibrate::plot(switch, *kind, d);
     assert!(svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"));
     assert!(
-        svg.contains("observed") && svg.contains("impact model"),
+        svg.contains("observed") && svg.contains("impact model") && svg.contains("fitted model"),
         "{svg}"
     );
     assert_eq!(
         svg.matches("<circle").count(),
         6,
         "one dot per bouncing event"
+    );
+}
+
+#[test]
+fn the_fitted_model_adds_the_dwell_a_newton_impact_lacks() {
+    let (r, v0) = (0.7, 0.01);
+    for dwell in [0.0, 0.5, 2.0] {
+        let events: Vec<Event> = (0..10)
+            .map(|i| press_with_dwell(r, v0, f64::from(i), dwell))
+            .collect();
+        let groups = group(&events, 1e-12, GAP);
+        let d: Vec<_> = groups.values().flatten().collect();
+        let model = BounceModel::fit(&d);
+        assert!(model.impact, "{model:?}");
+        assert_eq!((model.clean, model.single, model.late), (0.0, 1.0, 0.0));
+        // Closed time is `dwell` times every flight: the closed share is `dwell`, to rounding.
+        let share = model.closed_share.unwrap();
+        assert!((share - dwell).abs() <= 1e-9, "dwell {dwell}: {share}");
+        // The burst is the impact model's flights times 1 + dwell, so it misses the observed
+        // bounce (1 + dwell) * sum of flights only as the impact model alone does (see above:
+        // O(j^2) in the flights, the fitted R carried through 1 / (1 - R), the Zeno tail).
+        let fit = ImpactFit::new(&d);
+        let j = r * v0 / (OMEGA * DELTA.abs());
+        let carried = r / (1.0 - r) * (fit.restitution.unwrap() / r - 1.0).abs();
+        let tail = d[0].flights.last().unwrap() * r / (1.0 - r) * (1.0 + dwell) / d[0].bounce;
+        let tolerance = 2.0 * j * j / 3.0 + carried + tail + 1e-9;
+        for q in [0.5, 0.9, 0.99] {
+            let got = model.quantile(q).unwrap() / d[0].bounce;
+            assert!(
+                (got - 1.0).abs() <= tolerance,
+                "dwell {dwell}, q {q}: {got}"
+            );
+        }
+        for check in validations(&d, 3) {
+            for f in check.fitted {
+                assert!((f.unwrap() - 1.0).abs() <= tolerance, "{check:?}");
+            }
+        }
+    }
+}
+
+/// A standard normal draw (Box-Muller).
+fn normal(rng: &mut SplitMix) -> f64 {
+    let u = 1.0 - rng.unit();
+    let v = rng.unit();
+    (-2.0 * u.ln()).sqrt() * (2.0 * std::f64::consts::PI * v).cos()
+}
+
+#[test]
+fn the_fitted_model_recovers_a_known_mixture_of_clean_edges_bursts_and_late_bursts() {
+    // 30 % clean, 50 % one burst log-normal (100 us x/ e^0.5), 20 % late burst log-normal
+    // (50 ms x/ e^0.3): the late ones settle for at least 5 ms, the gap (their shortest bounce
+    // is 7.7 standard deviations below the median).
+    let (n, clean, single) = (4000, 0.3, 0.5);
+    let (burst_mu, burst_sigma) = ((100e-6_f64).ln(), 0.5);
+    let (late_mu, late_sigma) = ((50e-3_f64).ln(), 0.3);
+    let mut rng = SplitMix(11);
+    let events: Vec<Event> = (0..n)
+        .map(|i| {
+            let t = f64::from(i);
+            let u = rng.unit();
+            let changes = if u < clean {
+                vec![t]
+            } else if u < clean + single {
+                let b = (burst_mu + burst_sigma * normal(&mut rng)).exp();
+                vec![t, t + b / 3.0, t + b]
+            } else {
+                let b = (late_mu + late_sigma * normal(&mut rng)).exp();
+                vec![t, t + 20e-6, t + 40e-6, t + b - 10e-6, t + b]
+            };
+            Event {
+                switch: "mixture".into(),
+                origin: String::new(),
+                kind: Kind::Press,
+                changes,
+            }
+        })
+        .collect();
+    let groups = group(&events, 1e-9, GAP);
+    let d: Vec<_> = groups.values().flatten().collect();
+    let m = BounceModel::fit(&d);
+    assert!(!m.impact, "{m:?}");
+    // Every estimate within 4 standard errors: shares sqrt(p (1 - p) / n), a log-normal's mu
+    // sigma / sqrt(k) and its sigma about sigma / sqrt(2 k), k the events of that part.
+    let nf = f64::from(n);
+    let share = |p: f64| 4.0 * (p * (1.0 - p) / nf).sqrt();
+    assert!((m.clean - clean).abs() <= share(clean), "{m:?}");
+    assert!((m.single - single).abs() <= share(single), "{m:?}");
+    assert!((m.late - 0.2).abs() <= share(0.2), "{m:?}");
+    for (fit, mu, sigma, p) in [
+        (m.burst.unwrap(), burst_mu, burst_sigma, single),
+        (m.late_bounce.unwrap(), late_mu, late_sigma, 0.2),
+    ] {
+        let k = p * nf;
+        assert!((fit.mu - mu).abs() <= 4.0 * sigma / k.sqrt(), "{fit:?}");
+        assert!(
+            (fit.sigma - sigma).abs() <= 4.0 * sigma / (2.0 * k).sqrt(),
+            "{fit:?}"
+        );
+    }
+}
+
+#[test]
+fn the_mixture_quantile_is_the_inverse_of_its_distribution() {
+    let l = |mu: f64, sigma: f64| LogNormal { mu, sigma, n: 10 };
+    // Clean 30 %, the rest one log-normal: the quantile is analytic. Standard normal points:
+    // Phi(1) = 0.841344746068543, Phi(2.326347874040841) = 0.99.
+    let m = BounceModel {
+        events: 10,
+        clean: 0.3,
+        single: 0.7,
+        late: 0.0,
+        burst: Some(l(-7.0, 0.8)),
+        late_bounce: None,
+        impact: false,
+        closed_share: None,
+    };
+    for (p, z) in [
+        (0.5, 0.0),
+        (0.841_344_746_068_543, 1.0),
+        (0.99, 2.326_347_874_040_841),
+    ] {
+        let got = m.quantile(0.3 + 0.7 * p).unwrap();
+        let want = (-7.0_f64 + 0.8 * z).exp();
+        assert!((got / want - 1.0).abs() <= 1e-9, "p {p}: {got} vs {want}");
+    }
+    assert_eq!(m.quantile(0.3), Some(0.0));
+    assert_eq!(m.quantile(0.1), Some(0.0));
+    // Two parts: the distribution at the quantile is the probability asked.
+    let two = BounceModel {
+        single: 0.5,
+        late: 0.2,
+        late_bounce: Some(l(-3.0, 1.5)),
+        ..m.clone()
+    };
+    for q in [0.31, 0.5, 0.9, 0.99, 0.999, 1.0] {
+        let t = two.quantile(q).unwrap();
+        assert!((two.cdf(t).unwrap() - q).abs() <= 1e-9, "q {q}: t {t}");
+    }
+    // A part that occurs but could not be fitted: no quantile, no distribution.
+    let unfitted = BounceModel {
+        late_bounce: None,
+        ..two.clone()
+    };
+    assert_eq!(unfitted.quantile(0.9), None);
+    assert_eq!(unfitted.cdf(1.0), None);
+    // No events: nothing to say.
+    let empty = BounceModel::fit(&[]);
+    assert_eq!(empty.quantile(0.5), None);
+    // A log-normal needs three positive, finite durations.
+    assert_eq!(LogNormal::fit(&[1e-3, 2e-3]), None);
+    assert_eq!(LogNormal::fit(&[1e-3, 0.0, 2e-3]), None);
+    assert_eq!(LogNormal::fit(&[1e-3, f64::NAN, 2e-3]), None);
+    let same = LogNormal::fit(&[1e-3; 3]).unwrap();
+    assert_eq!(
+        (same.sigma, same.cdf(0.999e-3), same.cdf(1e-3)),
+        (0.0, 0.0, 1.0)
     );
 }

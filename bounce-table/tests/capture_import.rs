@@ -84,7 +84,7 @@ fn the_capture_is_cut_into_its_presses_and_releases() {
     assert_eq!(s.segment("button", 0.5e-3).len(), 5);
     // The first press at 2 us resolution: closed 12 us, open 3 us, closed 45 us, open 1 us
     // (chatter), then closed.
-    let d = events[0].describe(2e-6);
+    let d = events[0].describe(2e-6, 1.0);
     assert_eq!(
         (d.transitions, d.chatter, d.dwells.len(), d.flights.len()),
         (5, 1, 2, 1)
@@ -92,7 +92,7 @@ fn the_capture_is_cut_into_its_presses_and_releases() {
     assert!((d.flights[0] - 3e-6).abs() < 1e-12, "{:?}", d.flights);
     assert!((d.bounce - 61e-6).abs() < 1e-12);
     // The last release: two chatter intervals, a flight of 998.4 us, the late re-close (chatter).
-    let d = events[3].describe(2e-6);
+    let d = events[3].describe(2e-6, 1.0);
     assert_eq!(
         (d.chatter, d.flights.len(), d.dwells.len()),
         (3, 1, 0),
