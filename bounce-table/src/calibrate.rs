@@ -902,3 +902,47 @@ pub fn plot(switch: &str, kind: Kind, d: &[capture::Description]) -> String {
         &series,
     )
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn args(a: &[&str]) -> Vec<String> {
+        a.iter().map(|s| (*s).to_owned()).collect()
+    }
+
+    #[test]
+    fn options_have_stated_defaults_and_name_the_bad_one() {
+        let o = options(&args(&["capture.vcd"])).unwrap();
+        assert_eq!(o.format, Format::Vcd);
+        assert_eq!(
+            (o.resolution, o.burst_gap, o.quiet, o.percentile),
+            (3e-6, 5e-3, 0.2, 0.99)
+        );
+        let o = options(&args(&[
+            "--burst-gap",
+            "2e-2",
+            "--percentile",
+            "99.9",
+            "c.csv",
+        ]))
+        .unwrap();
+        assert_eq!((o.burst_gap, o.format), (2e-2, Format::Csv));
+        assert!((o.percentile - 0.999).abs() < 1e-15);
+        for (bad, named) in [
+            (&["--burst-gap", "0", "c.csv"][..], "--burst-gap"),
+            (&["--burst-gap", "NaN", "c.csv"], "--burst-gap"),
+            (&["--burst-gap"], "--burst-gap"),
+            (&["--resolution", "-1", "c.csv"], "--resolution"),
+            (&["--percentile", "0", "c.csv"], "--percentile"),
+            (&["--export", "java", "c.csv"], "--export"),
+            (&["--frobnicate", "c.csv"], "--frobnicate"),
+            (&["capture.bin"], "--format"),
+            (&["a.csv", "b.csv"], "one capture"),
+            (&[], "capture file"),
+        ] {
+            let e = options(&args(bad)).unwrap_err();
+            assert!(e.contains(named), "{bad:?}: {e}");
+        }
+    }
+}

@@ -40,7 +40,8 @@ Options:
 
 calibrate: describes a capture (JSON Lines of the bouncy-button format, a CSV of `time,level`
 rows, or a VCD; format from the extension) per switch and kind (bounce P50/P90/P99/max,
-transitions, resolved flights and dwells, chatter), fits the impact model, checks it and the
+transitions, resolved flights and dwells, chatter), fits the impact model and a bounce model
+with empirical terms (clean share, log-normal bursts, late bursts), checks them and the
 empirical quantiles on held-out halves, and recommends windows. High = open unless
 --active-high.
   --resolution S       intervals shorter than S are chatter, not timed (3e-6)
@@ -48,10 +49,10 @@ empirical quantiles on held-out halves, and recommends windows. High = open unle
   --quiet S            in CSV/VCD streams, a gap longer than S starts a new event (0.2)
   --signal NAME        the VCD signal (default: the only 1-bit one)
   --skip-section NAME  leave out a JSON Lines section (repeatable)
-  --percentile P       the windows' percentile of the observed bounce (99)
+  --percentile P       the windows' percentile of the bounce (99)
   --seed N             the random held-out split's seed (1)
   --export c|rust      print only the windows, as #defines or Rust constants (ns)
-  --plot DIR           also write SWITCH-KIND.svg: observed bounce distribution vs the model";
+  --plot DIR           also write SWITCH-KIND.svg: observed bounce distribution vs the models";
 
 struct Options {
     settings: Settings,
