@@ -45,6 +45,8 @@ pub struct Options {
     pub export: Option<bool>,
     /// Write one SVG per switch and kind there.
     pub plot: Option<String>,
+    /// Print every event's description (CSV) instead of the report.
+    pub events: bool,
 }
 
 fn seconds(name: &str, v: &str) -> Result<f64, String> {
@@ -71,6 +73,7 @@ pub fn options(args: &[String]) -> Result<Options, String> {
     let mut seed = 1;
     let mut export = None;
     let mut plot = None;
+    let mut events = false;
     let mut it = args.iter();
     while let Some(arg) = it.next() {
         let mut value = |name: &str| it.next().cloned().ok_or(format!("{name} needs a value"));
@@ -105,6 +108,7 @@ pub fn options(args: &[String]) -> Result<Options, String> {
                     .map_err(|_| format!("--seed: '{v}' is not a whole number"))?;
             }
             "--plot" => plot = Some(value("--plot")?),
+            "--events" => events = true,
             "--export" => {
                 export = Some(match value("--export")?.as_str() {
                     "c" => false,
@@ -143,6 +147,7 @@ pub fn options(args: &[String]) -> Result<Options, String> {
         seed,
         export,
         plot,
+        events,
     })
 }
 
@@ -181,6 +186,42 @@ fn sorted(mut v: Vec<f64>) -> Vec<f64> {
 
 fn q(v: &[f64], p: f64, show: impl Fn(f64) -> String) -> String {
     nearest_rank(v, p).map_or_else(|| "-".to_owned(), show)
+}
+
+/// Every event described, one CSV row each, in capture order: where it is in the capture, its
+/// bounce, transitions, resolved flights and dwells (count, longest), unresolved chatter
+/// (count, time) and bursts.
+#[must_use]
+pub fn events_csv(events: &[Event], resolution: f64, burst_gap: f64) -> String {
+    let mut out = String::from(
+        "switch,origin,kind,bounce_s,transitions,flights,longest_flight_s,dwells,longest_dwell_s,chatter,chatter_time_s,bursts\n",
+    );
+    let quote = |s: &str| format!("\"{}\"", s.replace('"', "\"\""));
+    let longest = |v: &[f64]| {
+        v.iter()
+            .copied()
+            .reduce(f64::max)
+            .map_or_else(String::new, |x| format!("{x:e}"))
+    };
+    for e in events {
+        let d = e.describe(resolution, burst_gap);
+        out.push_str(&format!(
+            "{},{},{},{:e},{},{},{},{},{},{},{:e},{}\n",
+            quote(&e.switch),
+            quote(&e.origin),
+            e.kind.name(),
+            d.bounce,
+            d.transitions,
+            d.flights.len(),
+            longest(&d.flights),
+            d.dwells.len(),
+            longest(&d.dwells),
+            d.chatter,
+            d.chatter_time,
+            d.bursts,
+        ));
+    }
+    out
 }
 
 /// The events described, per switch and kind, in capture order.
@@ -944,5 +985,38 @@ mod tests {
             let e = options(&args(bad)).unwrap_err();
             assert!(e.contains(named), "{bad:?}: {e}");
         }
+    }
+
+    #[test]
+    fn events_csv_has_one_row_per_event_quoted() {
+        let events = [
+            Event {
+                switch: "a \"b\", c".into(),
+                origin: "line 3".into(),
+                kind: Kind::Press,
+                // closed 10 us, open 1 us (chatter), closed 20 us, open 9 ms (quiet: a second
+                // burst), closed 30 us.
+                changes: vec![0.0, 10e-6, 11e-6, 31e-6, 9.031e-3, 9.061e-3],
+            },
+            Event {
+                switch: "x".into(),
+                origin: String::new(),
+                kind: Kind::Release,
+                changes: vec![1.0],
+            },
+        ];
+        let csv = events_csv(&events, 3e-6, 5e-3);
+        let lines: Vec<&str> = csv.lines().collect();
+        assert_eq!(lines.len(), 3, "{csv}");
+        let rest = lines[1]
+            .strip_prefix("\"a \"\"b\"\", c\",\"line 3\",press,")
+            .unwrap();
+        let f: Vec<f64> = rest.split(',').map(|x| x.parse().unwrap()).collect();
+        let want = [9.061e-3, 6.0, 1.0, 9e-3, 3.0, 3e-5, 1.0, 1e-6, 2.0];
+        assert_eq!(f.len(), want.len(), "{rest}");
+        for (got, want) in f.iter().zip(want) {
+            assert!((got - want).abs() <= 1e-12, "{rest}");
+        }
+        assert_eq!(lines[2], "\"x\",\"\",release,0e0,1,0,,0,,0,0e0,1");
     }
 }

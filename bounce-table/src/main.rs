@@ -20,7 +20,7 @@ const USAGE: &str = "usage: bounce-table [OPTIONS] [SCENE_FILE]
                               [--quiet S] [--signal NAME] [--active-high]
                               [--skip-section NAME]
                               [--percentile P] [--seed N] [--export c|rust] [--plot DIR]
-                              CAPTURE
+                              [--events] CAPTURE
 
 Prints predicted bounce and debounce windows: for the built-in catalogue of typical switches
 (physics.md sec. 7: assumed values, not a datasheet), or for the switches of SCENE_FILE
@@ -52,6 +52,7 @@ empirical quantiles on held-out halves, and recommends windows. High = open unle
   --percentile P       the windows' percentile of the bounce (99)
   --seed N             the random held-out split's seed (1)
   --export c|rust      print only the windows, as #defines or Rust constants (ns)
+  --events             print only each event's description, one CSV row per event
   --plot DIR           also write SWITCH-KIND.svg: observed bounce distribution vs the models";
 
 struct Options {
@@ -168,6 +169,13 @@ fn main() -> ExitCode {
         };
         return match calibrate::load(&options) {
             Ok((events, skipped)) => {
+                if options.events {
+                    print!(
+                        "{}",
+                        calibrate::events_csv(&events, options.resolution, options.burst_gap)
+                    );
+                    return ExitCode::SUCCESS;
+                }
                 let groups = calibrate::group(&events, options.resolution, options.burst_gap);
                 if let Some(rust) = options.export {
                     print!(
