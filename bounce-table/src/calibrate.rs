@@ -529,8 +529,9 @@ impl BounceModel {
     }
 
     /// The `q` quantile of the bounce (s, 0 if at least a share `q` is clean): the least t
-    /// with P(bounce <= t) >= q, by bisection in ln t to 1e-12 relative. `None` if a part that
-    /// occurs could not be fitted, or if there are no events.
+    /// with P(bounce <= t) >= q, by bisection in ln t to 1e-12 relative (q = 1: where the
+    /// distribution reaches 1 in f64, about 8 standard deviations past the last median). `None`
+    /// if a part that occurs could not be fitted, or if there are no events.
     #[must_use]
     pub fn quantile(&self, q: f64) -> Option<f64> {
         if self.events == 0 {
