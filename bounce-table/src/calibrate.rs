@@ -572,6 +572,12 @@ impl BounceModel {
     }
 }
 
+/// Picks one predictor's ratios out of a [`Validation`].
+type Ratios = fn(&Validation) -> &[Option<f64>; 3];
+
+/// How many random halvings the report's spread of held-out ratios draws.
+pub const RANDOM_SPLITS: usize = 200;
+
 /// The quantiles the validation compares.
 pub const VALIDATION_QUANTILES: [f64; 3] = [0.5, 0.9, 0.99];
 
@@ -624,24 +630,73 @@ fn validate(
     }
 }
 
-/// The two held-out checks of one switch and kind: a seeded random half, and the first half in
-/// capture order against the second.
-#[must_use]
-pub fn validations(d: &[&capture::Description], seed: u64) -> [Validation; 2] {
-    let half = d.len() / 2;
-    let (first, second) = d.split_at(half);
+/// `d` shuffled (Fisher-Yates, `rng`) and cut in two halves.
+fn random_halves<'a>(
+    d: &[&'a capture::Description],
+    rng: &mut crate::spreads::SplitMix,
+) -> (Vec<&'a capture::Description>, Vec<&'a capture::Description>) {
     let mut shuffled = d.to_vec();
-    // Fisher-Yates: the same split for the same seed everywhere.
-    let mut rng = crate::spreads::SplitMix(seed);
     for i in (1..shuffled.len()).rev() {
         let j = usize::try_from(rng.next_u64() % (i as u64 + 1)).unwrap_or(0);
         shuffled.swap(i, j);
     }
-    let (a, b) = shuffled.split_at(half);
+    let rest = shuffled.split_off(d.len() / 2);
+    (shuffled, rest)
+}
+
+/// The two held-out checks of one switch and kind: a seeded random half (the same split for
+/// the same seed everywhere), and the first half in capture order against the second.
+#[must_use]
+pub fn validations(d: &[&capture::Description], seed: u64) -> [Validation; 2] {
+    let (first, second) = d.split_at(d.len() / 2);
+    let (a, b) = random_halves(d, &mut crate::spreads::SplitMix(seed));
     [
-        validate("random halves", a, b),
+        validate("random halves", &a, &b),
         validate("chronological halves", first, second),
     ]
+}
+
+/// How far one predictor's held-out ratio moves over many random halvings, at one quantile.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RatioSpread {
+    /// Halvings in which the predictor predicted (and the held-out half had the quantile).
+    pub predicted: usize,
+    /// 10th, 50th and 90th percentile of predicted / observed over those halvings.
+    pub p10: f64,
+    /// The median ratio.
+    pub p50: f64,
+    /// The 90th percentile.
+    pub p90: f64,
+}
+
+/// The held-out ratios of the empirical quantiles, the impact model and the fitted model over
+/// `splits` random halvings (seeded; the first is the one of [`validations`]): per predictor,
+/// per quantile of [`VALIDATION_QUANTILES`], `None` where it never predicted.
+#[must_use]
+pub fn random_splits(
+    d: &[&capture::Description],
+    seed: u64,
+    splits: usize,
+) -> [[Option<RatioSpread>; 3]; 3] {
+    let mut rng = crate::spreads::SplitMix(seed);
+    let checks: Vec<Validation> = (0..splits)
+        .map(|_| {
+            let (a, b) = random_halves(d, &mut rng);
+            validate("random halves", &a, &b)
+        })
+        .collect();
+    let pick: [Ratios; 3] = [|v| &v.empirical, |v| &v.model, |v| &v.fitted];
+    pick.map(|f| {
+        [0, 1, 2].map(|k| {
+            let r = sorted(checks.iter().filter_map(|v| f(v)[k]).collect());
+            Some(RatioSpread {
+                predicted: r.len(),
+                p10: nearest_rank(&r, 0.1)?,
+                p50: nearest_rank(&r, 0.5)?,
+                p90: nearest_rank(&r, 0.9)?,
+            })
+        })
+    })
 }
 
 /// A debounce window from a capture, two ways, and the one recommended.
@@ -669,11 +724,7 @@ impl Window {
 
 /// The worst under-prediction (observed / predicted, at least 1) among `ratios` at the checked
 /// quantile nearest `percentile`.
-fn worst(
-    checks: &[Validation],
-    percentile: f64,
-    ratios: fn(&Validation) -> &[Option<f64>; 3],
-) -> f64 {
+fn worst(checks: &[Validation], percentile: f64, ratios: Ratios) -> f64 {
     let nearest = VALIDATION_QUANTILES
         .iter()
         .enumerate()
@@ -753,6 +804,12 @@ pub fn assess(groups: &Groups<'_>, percentile: f64, seed: u64) -> String {
          | switch | kind | split | events | observed P50 / P90 / P99 | empirical | impact model | fitted model |\n\
          |---|---|---|---:|---:|---:|---:|---:|\n",
     );
+    let mut spread = format!(
+        "\n## Held-out over {RANDOM_SPLITS} random halvings\n\nThe held-out ratio (predicted / observed) over \
+         {RANDOM_SPLITS} seeded random halvings: median and, in brackets, the 10th to 90th percentile; \
+         \"splits\": how many halvings the predictor could predict in.\n\n\
+         | switch | kind | predictor | splits | P50 | P90 | P99 |\n|---|---|---|---:|---:|---:|---:|\n"
+    );
     let mut windows = format!(
         "\n## Windows\n\nP{p} of the observed bounce, and P{p} of the fitted model, each widened by its own worst \
          under-prediction in the held-out checks at that quantile; the window is the larger.\n\n\
@@ -815,6 +872,32 @@ pub fn assess(groups: &Groups<'_>, percentile: f64, seed: u64) -> String {
                 three(&c.fitted),
             ));
         }
+        for (name, r) in ["empirical", "impact model", "fitted model"]
+            .iter()
+            .zip(random_splits(&refs, seed, RANDOM_SPLITS))
+        {
+            let cell = |x: Option<RatioSpread>| {
+                x.map_or_else(
+                    || "-".to_owned(),
+                    |x| {
+                        format!(
+                            "{} ({} - {})",
+                            ratio_text(Some(x.p50)),
+                            ratio_text(Some(x.p10)),
+                            ratio_text(Some(x.p90))
+                        )
+                    },
+                )
+            };
+            spread.push_str(&format!(
+                "| {switch} | {} | {name} | {} | {} | {} | {} |\n",
+                kind.name(),
+                r.iter().flatten().map(|x| x.predicted).max().unwrap_or(0),
+                cell(r[0]),
+                cell(r[1]),
+                cell(r[2]),
+            ));
+        }
         let explained = if fit.holds() {
             "impact model and empirical terms"
         } else {
@@ -830,7 +913,7 @@ pub fn assess(groups: &Groups<'_>, percentile: f64, seed: u64) -> String {
             show(w.recommended()),
         ));
     }
-    out + &model + &checks + &windows
+    out + &model + &checks + &spread + &windows
 }
 
 /// The windows as C `#define`s or Rust constants (nanoseconds, rounded up).

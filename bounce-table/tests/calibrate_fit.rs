@@ -5,7 +5,9 @@
 
 mod common;
 
-use bounce_table::calibrate::{group, validations, BounceModel, ImpactFit, LogNormal};
+use bounce_table::calibrate::{
+    group, random_splits, validations, BounceModel, ImpactFit, LogNormal,
+};
 use bounce_table::capture::{Event, Kind};
 use bounce_table::spreads::SplitMix;
 use host_tests::reference::{simulate_observed, OneBody, DEFAULT_BUDGET};
@@ -212,6 +214,16 @@ fn the_fitted_model_adds_the_dwell_a_newton_impact_lacks() {
             for f in check.fitted {
                 assert!((f.unwrap() - 1.0).abs() <= tolerance, "{check:?}");
             }
+        }
+        // Over many halvings too: every one predicts, within the same tolerance.
+        let [_, _, fitted] = random_splits(&d, 3, 20);
+        for r in fitted {
+            let r = r.unwrap();
+            assert_eq!(r.predicted, 20);
+            assert!(
+                (r.p10 - 1.0).abs() <= tolerance && (r.p90 - 1.0).abs() <= tolerance,
+                "{r:?}"
+            );
         }
     }
 }
