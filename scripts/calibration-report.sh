@@ -85,8 +85,8 @@ $gaps
   both halves have the 3 events per part a log-normal needs (P90 0.25-2.71). Over 200 random
   halvings its P99 is at or above the held-out P99 in at least 90 % of them for the push
   button's press and the rocker's press (10th percentile of the ratio 1.09 and 1.25), while
-  the empirical P99 (the largest event of the other half) falls short in about half (median
-  0.94). At P90 neither is better: both fail on halves with few late bursts or few bouncing
+  the empirical P99 (the largest event of the other half) falls short in at least half of
+  them (median 0.94-0.99). At P90 neither is better: both fail on halves with few late bursts or few bouncing
   events (the rocker's release: 9 bouncing events in 50).
 - The rocker's press is one long burst of short events (P50 35 transitions in 420 us, ~13
   unresolved intervals per press: contact chatter rather than flights, closed 0.6 times as
