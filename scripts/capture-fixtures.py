@@ -1,16 +1,27 @@
 #!/usr/bin/env python3
 """Writes the capture fixtures of bounce-table's importer tests with independent writers: a VCD
-by pyvcd (the `vcd` package on PyPI) and a CSV by Python's csv module, from one synthetic
-capture (three presses and releases, bounce, sub-resolution chatter, a second 1-bit signal and
-a bus in the VCD), plus the changes they encode (expected.json).
+by pyvcd (the `vcd` package on PyPI), a CSV by Python's csv module, and a VCD exported by
+sigrok-cli (the logic analyzer suite's command line) from one synthetic capture (three presses
+and releases, bounce, sub-resolution chatter, a second 1-bit signal and a bus in the pyvcd
+VCD), plus the changes they encode (expected.json).
+
+sigrok-cli imports the pyvcd VCD without the bus (its VCD input takes 1-bit signals only) at
+10 MHz (every change of the capture falls on a 100 ns sample) and exports it as sigrok does:
+value changes on the time stamp's line, a `$date` of the day it ran (CI's diff ignores that
+line) and, in version 0.7, a `META samplerate` line ahead of the header.
 
 Usage: python3 scripts/capture-fixtures.py [DIR]   (default bounce-table/tests/fixtures)
-Needs: pip install pyvcd==0.5.1 (the version the committed fixtures were written with)
+Needs: pip install pyvcd==0.5.1, and sigrok-cli 0.7.2 (Debian 12: apt-get install sigrok-cli),
+the versions the committed fixtures were written with.
 """
 import csv
 import json
 import os
+import re
+import shutil
+import subprocess
 import sys
+import tempfile
 
 from vcd import VCDWriter
 
@@ -54,3 +65,22 @@ with open(os.path.join(out, "button.csv"), "w", newline="") as f:
 with open(os.path.join(out, "expected.json"), "w") as f:
     json.dump({"closed_before": False, "changes_ns": [t for t, _ in changes]}, f, indent=1)
     f.write("\n")
+
+sigrok = shutil.which("sigrok-cli")
+if sigrok is None:
+    sys.exit("capture-fixtures.py: sigrok-cli not found (Debian: apt-get install sigrok-cli)")
+with open(os.path.join(out, "button.vcd")) as f:
+    one_bit = f.read().replace("$var wire 8 # bus $end\n", "")
+one_bit = re.sub(r"^b\S+ #\n", "", one_bit, flags=re.M)
+# A capture runs on after its last edge; sigrok exports samples up to the last time stamp only,
+# so the source ends 100 ms after the last change.
+one_bit += "#%d\n" % (changes[-1][0] + 100_000_000)
+with tempfile.TemporaryDirectory() as tmp:
+    src = os.path.join(tmp, "button-1bit.vcd")
+    with open(src, "w") as f:
+        f.write(one_bit)
+    subprocess.run(
+        [sigrok, "-i", src, "-I", "vcd:downsample=100", "-O", "vcd",
+         "-o", os.path.join(out, "button-sigrok.vcd")],
+        check=True,
+    )

@@ -232,7 +232,9 @@ pub fn read_csv(file: &str, text: &str, polarity: Polarity) -> Result<Stream, Ca
 /// Reads a Value Change Dump (IEEE 1364 sec. 18: what sigrok/PulseView and most logic
 /// analyzers export) and returns the changes of one 1-bit signal: the one named `signal`, or
 /// the only 1-bit signal when `signal` is `None`. The value at the first time stamp (or in
-/// `$dumpvars`) is the starting level.
+/// `$dumpvars`) is the starting level. Value changes may share a line with their time stamp
+/// (as PulseView and sigrok-cli write them); a first line `META ...`, which sigrok-cli 0.7 writes
+/// ahead of the header, is skipped.
 ///
 /// # Errors
 /// A malformed header or time stamp, an unknown or ambiguous signal, a signal wider than one
@@ -247,6 +249,7 @@ pub fn read_vcd(
     let tokens: Vec<(usize, &str)> = text
         .lines()
         .enumerate()
+        .filter(|(i, l)| !(*i == 0 && l.starts_with("META ")))
         .flat_map(|(i, l)| l.split_whitespace().map(move |t| (i + 1, t)))
         .collect();
     let mut scale = None;
@@ -711,6 +714,12 @@ mod tests {
             (format!("{head}#1.5\n"), 6, "whole number"),
             ("$timescale 3 ns $end\n".to_owned(), 1, "timescale"),
             ("#0\n1!\n".to_owned(), 1, "before `$enddefinitions`"),
+            // sigrok-cli's META line is skipped only where sigrok-cli writes it: first.
+            (
+                format!("$comment x $end\nMETA samplerate: 1\n{head}"),
+                2,
+                "before `$enddefinitions`",
+            ),
         ];
         for (text, line, why) in bad {
             let e = read_vcd("f.vcd", &text, None, Polarity::ActiveLow).unwrap_err();

@@ -1,6 +1,6 @@
-//! The capture importers against files written by independent writers: a VCD by pyvcd and a
-//! CSV by Python's csv module (`scripts/capture-fixtures.py`), holding the same synthetic capture
-//! as `expected.json`. And malformed variants of them, rejected with the line named.
+//! The capture importers against files written by independent writers: a VCD by pyvcd, a CSV by
+//! Python's csv module and a VCD exported by sigrok-cli (`scripts/capture-fixtures.py`), holding
+//! the same synthetic capture as `expected.json`. And malformed variants of them, rejected with the line named.
 
 use bounce_table::capture::{read_csv, read_vcd, Kind, Polarity, Stream};
 use serde_json::Value;
@@ -54,6 +54,37 @@ fn pyvcd_output_reads_back_exactly() {
     let e = read_vcd(
         "button.vcd",
         &fixture("button.vcd"),
+        None,
+        Polarity::ActiveLow,
+    )
+    .unwrap_err();
+    assert!(e.reason.contains("several 1-bit signals (sw, led)"), "{e}");
+}
+
+#[test]
+fn sigrok_cli_export_reads_back() {
+    // sigrok writes 100 ns ticks where pyvcd wrote nanoseconds: the same instants, up to the
+    // rounding of ticks * 1e-7 against ns * 1e-9 (a few ulps of 1.7 s).
+    let s = read_vcd(
+        "button-sigrok.vcd",
+        &fixture("button-sigrok.vcd"),
+        Some("sw"),
+        Polarity::ActiveLow,
+    )
+    .unwrap();
+    let want = expected();
+    assert_eq!(s.closed_before, want.closed_before);
+    assert_eq!(s.changes.len(), want.changes.len());
+    for (got, want) in s.changes.iter().zip(&want.changes) {
+        assert!(
+            (got - want).abs() <= 4.0 * f64::EPSILON * want,
+            "{got} vs {want}"
+        );
+    }
+    // Its second channel is there too, so the switch must be named.
+    let e = read_vcd(
+        "button-sigrok.vcd",
+        &fixture("button-sigrok.vcd"),
         None,
         Polarity::ActiveLow,
     )
