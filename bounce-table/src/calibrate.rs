@@ -364,9 +364,8 @@ impl ImpactFit {
     }
 }
 
-/// A log-normal distribution fitted to positive durations: `mu` and `sigma` the mean and the
-/// sample standard deviation of their logarithms (the maximum-likelihood fit, with the unbiased
-/// variance). Bounce durations are positive and spread over decades, which is what a log-normal
+/// A log-normal distribution fitted to positive durations: `mu` the mean of their logarithms
+/// (the maximum-likelihood estimate) and `sigma` their sample standard deviation (n - 1). Bounce durations are positive and spread over decades, which is what a log-normal
 /// describes; whether it describes a given capture is for the held-out check to say.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LogNormal {
