@@ -264,22 +264,14 @@ pub fn simulate(k: &Kernelled, budget: u64) -> Result<Outcome, Failure> {
         if regime == Regime::ZenoAccumulation && departure < tail && flight.c[2] > 0.0 {
             let t_f = departure / flight.c[2];
             let end = time.value() + t_f / (1.0 - r);
-            return Ok(Outcome {
+            return Ok(Outcome::accumulated(
                 regime,
-                end_time: Some(end),
-                impacts_total: None,
-                last_above_time: Some(if k.threshold.is_some() {
-                    last_above
-                } else {
-                    end
-                }),
-                impacts_above: if k.threshold.is_some() {
-                    Some(count_above)
-                } else {
-                    None
-                },
-                first_impacts: first,
-            });
+                end,
+                k.threshold.is_some(),
+                last_above,
+                count_above,
+                first,
+            ));
         }
         let Some(t) = flight.next_impact()? else {
             return Ok(Outcome {

@@ -64,6 +64,28 @@ pub struct Outcome {
     pub first_impacts: Vec<(f64, f64)>,
 }
 
+impl Outcome {
+    /// A bounce that ends in a Zeno accumulation at `end` (countless impacts): with a threshold,
+    /// the last impact above it and their count; without one, the accumulation itself.
+    pub(crate) fn accumulated(
+        regime: Regime,
+        end: f64,
+        threshold: bool,
+        last_above: f64,
+        count_above: u64,
+        first_impacts: Vec<(f64, f64)>,
+    ) -> Self {
+        Self {
+            regime,
+            end_time: Some(end),
+            impacts_total: None,
+            last_above_time: Some(if threshold { last_above } else { end }),
+            impacts_above: threshold.then_some(count_above),
+            first_impacts,
+        }
+    }
+}
+
 /// Why a simulation could not answer.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Failure {

@@ -388,22 +388,14 @@ pub fn simulate(s: &TwoBodies, budget: u64) -> Result<Outcome, Failure> {
             let v = (m1 * state[1] + m2 * state[3]) / big_m;
             match separation(s, state[2], v)? {
                 None => {
-                    return Ok(Outcome {
+                    return Ok(Outcome::accumulated(
                         regime,
-                        end_time: Some(t_stick),
-                        impacts_total: None,
-                        last_above_time: Some(if s.threshold.is_some() {
-                            last_above
-                        } else {
-                            t_stick
-                        }),
-                        impacts_above: if s.threshold.is_some() {
-                            Some(count_above)
-                        } else {
-                            None
-                        },
-                        first_impacts: first,
-                    })
+                        t_stick,
+                        s.threshold.is_some(),
+                        last_above,
+                        count_above,
+                        first,
+                    ))
                 }
                 Some(dt) => {
                     separations += 1;
