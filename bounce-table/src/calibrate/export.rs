@@ -1,0 +1,43 @@
+//! The windows as C `#define`s or Rust constants.
+
+use super::heldout::validations;
+use super::window::window;
+use super::Groups;
+use crate::capture;
+
+/// The windows as C `#define`s or Rust constants (nanoseconds, rounded up).
+#[must_use]
+pub fn export(groups: &Groups<'_>, percentile: f64, seed: u64, rust: bool) -> String {
+    let mut out = String::new();
+    let guard = "BOUNCE_CALIBRATED_H";
+    if rust {
+        out.push_str(&format!(
+            "// Debounce windows from a capture (bounce-table calibrate, P{}).\n\n",
+            percentile * 100.0
+        ));
+    } else {
+        out.push_str(&format!(
+            "/* Debounce windows from a capture (bounce-table calibrate, P{}). */\n#ifndef {guard}\n#define {guard}\n\n",
+            percentile * 100.0
+        ));
+    }
+    for ((switch, kind), d) in groups {
+        let refs: Vec<&capture::Description> = d.iter().collect();
+        let v = validations(&refs, seed);
+        let Some(w) = window(&refs, percentile, &v).recommended() else {
+            continue;
+        };
+        #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+        let ns = (w * 1e9).ceil() as u64;
+        let id = crate::output::identifier(&format!("{switch} {}", kind.name()));
+        if rust {
+            out.push_str(&format!("pub const {id}_WINDOW_NS: u64 = {ns};\n"));
+        } else {
+            out.push_str(&format!("#define {id}_WINDOW_NS {ns}ull\n"));
+        }
+    }
+    if !rust {
+        out.push_str(&format!("\n#endif /* {guard} */\n"));
+    }
+    out
+}

@@ -1,0 +1,285 @@
+//! The fits: what the impact model takes from a capture's timing ([`ImpactFit`]), log-normal
+//! parts ([`LogNormal`]) and the bounce model with empirical terms ([`BounceModel`]).
+
+use super::sorted;
+use crate::capture;
+use host_tests::stats::nearest_rank;
+
+/// The resolved flights of an event's first burst: the impact model describes one closing, so
+/// a later burst's flights (and the quiet interval before it) are not its flights.
+fn first_burst(d: &capture::Description) -> &[f64] {
+    d.flights.get(..d.first_burst_flights).unwrap_or(&d.flights)
+}
+
+/// What the impact model can take from a capture's timing: the restitution coefficient from
+/// the ratio of successive resolved flights (each flight lasts in proportion to the speed that
+/// starts it, for small j: `t_f = 2 R v / (Omega^2 |Delta|)`, so successive flights shrink by
+/// R), and the scale `v0 / (Omega^2 |Delta|) = t_f1 / (2 R)` from the first flight. Omega,
+/// Delta and v0 cannot be separated by timing alone: that needs the closing speed, the preload
+/// force or the contact's resonance measured apart.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ImpactFit {
+    /// Successive resolved flight pairs seen.
+    pub pairs: usize,
+    /// The median ratio of successive flights: the estimate of R.
+    pub restitution: Option<f64>,
+    /// The ratios' quartiles.
+    pub quartiles: Option<(f64, f64)>,
+    /// The share of ratios below 1 (all of them, if the impact model held).
+    pub shrinking: f64,
+    /// The median first resolved flight (s).
+    pub first_flight: Option<f64>,
+}
+
+impl ImpactFit {
+    /// The fit from described events.
+    #[must_use]
+    pub fn new(d: &[&capture::Description]) -> Self {
+        let ratios = sorted(
+            d.iter()
+                .flat_map(|x| first_burst(x).windows(2).map(|w| w[1] / w[0]))
+                .collect(),
+        );
+        let firsts = sorted(
+            d.iter()
+                .filter_map(|x| first_burst(x).first().copied())
+                .collect(),
+        );
+        #[allow(clippy::cast_precision_loss)]
+        let shrinking = if ratios.is_empty() {
+            0.0
+        } else {
+            ratios.iter().filter(|&&r| r < 1.0).count() as f64 / ratios.len() as f64
+        };
+        Self {
+            pairs: ratios.len(),
+            restitution: nearest_rank(&ratios, 0.5),
+            quartiles: nearest_rank(&ratios, 0.25).zip(nearest_rank(&ratios, 0.75)),
+            shrinking,
+            first_flight: nearest_rank(&firsts, 0.5),
+        }
+    }
+
+    /// Whether the flights decay as the impact model says: at least 5 pairs, at least 80 % of
+    /// ratios below 1 and the upper quartile below 1. (A label, not a test: it says whether the
+    /// model's parameters mean anything for this switch.)
+    #[must_use]
+    pub fn holds(&self) -> bool {
+        self.pairs >= 5 && self.shrinking >= 0.8 && self.quartiles.is_some_and(|(_, q3)| q3 < 1.0)
+    }
+
+    /// The impact model's bounce for one event: its first resolved flight over 1 - R (the
+    /// geometric sum of the flights); 0 without a resolved flight; `None` when R >= 1.
+    #[must_use]
+    pub fn bounce(&self, d: &capture::Description) -> Option<f64> {
+        let r = self.restitution.filter(|r| *r < 1.0)?;
+        Some(first_burst(d).first().map_or(0.0, |f| f / (1.0 - r)))
+    }
+}
+
+/// A log-normal distribution fitted to positive durations: `mu` the mean of their logarithms
+/// (the maximum-likelihood estimate) and `sigma` their sample standard deviation (n - 1). Bounce durations are positive and spread over decades, which is what a log-normal
+/// describes; whether it describes a given capture is for the held-out check to say.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LogNormal {
+    /// Mean of ln t (t in seconds).
+    pub mu: f64,
+    /// Standard deviation of ln t (0 when every duration is the same).
+    pub sigma: f64,
+    /// Durations fitted.
+    pub n: usize,
+}
+
+/// Fewer durations than this give no log-normal: two points fix a spread but say nothing of
+/// its shape.
+pub const MIN_FIT: usize = 3;
+
+impl LogNormal {
+    /// The fit to `t`; `None` with fewer than [`MIN_FIT`] durations or any not positive and
+    /// finite.
+    #[must_use]
+    pub fn fit(t: &[f64]) -> Option<Self> {
+        if t.len() < MIN_FIT || t.iter().any(|x| !(x.is_finite() && *x > 0.0)) {
+            return None;
+        }
+        #[allow(clippy::cast_precision_loss)]
+        let n = t.len() as f64;
+        let mu = t.iter().map(|x| x.ln()).sum::<f64>() / n;
+        let var = t.iter().map(|x| (x.ln() - mu).powi(2)).sum::<f64>() / (n - 1.0);
+        Some(Self {
+            mu,
+            sigma: var.sqrt(),
+            n: t.len(),
+        })
+    }
+
+    /// P(duration <= t).
+    #[must_use]
+    pub fn cdf(&self, t: f64) -> f64 {
+        if t <= 0.0 {
+            return 0.0;
+        }
+        let x = t.ln() - self.mu;
+        if self.sigma <= 0.0 {
+            return if x >= 0.0 { 1.0 } else { 0.0 };
+        }
+        0.5 * libm::erfc(-x / (self.sigma * core::f64::consts::SQRT_2))
+    }
+
+    /// The median, e^mu (s).
+    #[must_use]
+    pub fn median(&self) -> f64 {
+        self.mu.exp()
+    }
+}
+
+/// The fitted bounce model of one switch and kind: the impact model where it holds, and
+/// empirical terms for what it does not produce. Each event is one of three kinds:
+///
+/// - clean (no bounce), with the share observed;
+/// - one burst: log-normal in its duration. Where the impact model holds, each event's burst
+///   is its first resolved flight over 1 - R (the flights the model sums), times 1 + the
+///   closed share (the median of dwell and chatter time over flight time: a Newton impact has
+///   no contact time, a real contact dwells and chatters between flights); elsewhere the
+///   observed burst durations;
+/// - a late burst (the contact bounced again after settling for at least the burst gap):
+///   log-normal in the event's whole bounce, with the share observed.
+///
+/// The model's quantiles are those of that mixture; with few events its log-normal tails go
+/// past the largest event observed, which a window wants.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BounceModel {
+    /// Events fitted.
+    pub events: usize,
+    /// Share of events with no bounce.
+    pub clean: f64,
+    /// Share with one burst.
+    pub single: f64,
+    /// Share with a late burst.
+    pub late: f64,
+    /// The one-burst events' bounce.
+    pub burst: Option<LogNormal>,
+    /// The late-burst events' bounce.
+    pub late_bounce: Option<LogNormal>,
+    /// Whether the burst term is the impact model's (else the observed bursts').
+    pub impact: bool,
+    /// Median (dwell + chatter time) / flight time over the one-burst events with a resolved
+    /// flight.
+    pub closed_share: Option<f64>,
+}
+
+impl BounceModel {
+    /// The model fitted to described events.
+    #[must_use]
+    pub fn fit(d: &[&capture::Description]) -> Self {
+        let fit = ImpactFit::new(d);
+        let clean: Vec<_> = d.iter().filter(|x| x.bounce <= 0.0).collect();
+        let single: Vec<_> = d
+            .iter()
+            .filter(|x| x.bounce > 0.0 && x.bursts <= 1)
+            .collect();
+        let late: Vec<f64> = d
+            .iter()
+            .filter(|x| x.bounce > 0.0 && x.bursts > 1)
+            .map(|x| x.bounce)
+            .collect();
+        let closed_share = nearest_rank(
+            &sorted(
+                single
+                    .iter()
+                    .filter_map(|x| {
+                        let flying: f64 = x.flights.iter().sum();
+                        let closed: f64 = x.dwells.iter().sum::<f64>() + x.chatter_time;
+                        (flying > 0.0).then(|| closed / flying)
+                    })
+                    .collect(),
+            ),
+            0.5,
+        );
+        let impact = fit.holds();
+        let burst: Vec<f64> = single
+            .iter()
+            .map(|x| match (impact, fit.bounce(x)) {
+                (true, Some(b)) if b > 0.0 => b * (1.0 + closed_share.unwrap_or(0.0)),
+                _ => x.bounce,
+            })
+            .collect();
+        #[allow(clippy::cast_precision_loss)]
+        let share = |k: usize| {
+            if d.is_empty() {
+                0.0
+            } else {
+                k as f64 / d.len() as f64
+            }
+        };
+        Self {
+            events: d.len(),
+            clean: share(clean.len()),
+            single: share(single.len()),
+            late: share(late.len()),
+            burst: LogNormal::fit(&burst),
+            late_bounce: LogNormal::fit(&late),
+            impact,
+            closed_share,
+        }
+    }
+
+    /// The bouncing parts with their shares; `None` if a part that occurs could not be fitted.
+    fn parts(&self) -> Option<Vec<(f64, LogNormal)>> {
+        [(self.single, self.burst), (self.late, self.late_bounce)]
+            .into_iter()
+            .filter(|(w, _)| *w > 0.0)
+            .map(|(w, l)| l.map(|l| (w, l)))
+            .collect()
+    }
+
+    /// P(bounce <= t); `None` if a part that occurs could not be fitted.
+    #[must_use]
+    pub fn cdf(&self, t: f64) -> Option<f64> {
+        let parts = self.parts()?;
+        Some(self.clean + parts.iter().map(|(w, l)| w * l.cdf(t)).sum::<f64>())
+    }
+
+    /// The `q` quantile of the bounce (s, 0 if at least a share `q` is clean): the least t
+    /// with P(bounce <= t) >= q, by bisection in ln t to 1e-12 relative (q = 1: where the
+    /// distribution reaches 1 in f64, about 8 standard deviations past the last median). `None`
+    /// if a part that occurs could not be fitted, or if there are no events.
+    #[must_use]
+    pub fn quantile(&self, q: f64) -> Option<f64> {
+        if self.events == 0 {
+            return None;
+        }
+        let parts = self.parts()?;
+        if q <= self.clean || parts.is_empty() {
+            return Some(0.0);
+        }
+        // The cdf reaches its total (1 up to rounding) 40 standard deviations past the
+        // largest median; q is asked to the total so rounding cannot leave it unreachable.
+        let total = self.clean + parts.iter().map(|(w, _)| w).sum::<f64>();
+        let q = q.min(total);
+        let spread = parts.iter().map(|(_, l)| l.sigma).fold(0.0, f64::max) * 40.0 + 1.0;
+        let mut lo = parts
+            .iter()
+            .map(|(_, l)| l.mu)
+            .fold(f64::INFINITY, f64::min)
+            - spread;
+        let mut hi = parts
+            .iter()
+            .map(|(_, l)| l.mu)
+            .fold(f64::NEG_INFINITY, f64::max)
+            + spread;
+        let at = |x: f64| self.clean + parts.iter().map(|(w, l)| w * l.cdf(x.exp())).sum::<f64>();
+        for _ in 0..200 {
+            if hi - lo <= 1e-12 * hi.abs().max(1.0) {
+                break;
+            }
+            let mid = 0.5 * (lo + hi);
+            if at(mid) >= q {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        Some(hi.exp())
+    }
+}

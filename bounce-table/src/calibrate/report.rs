@@ -1,0 +1,229 @@
+//! The report: the description table, the fits, the held-out checks and the windows
+//! (markdown).
+
+use super::fit::{BounceModel, ImpactFit, LogNormal};
+use super::heldout::{
+    random_splits, ratio, validations, RatioSpread, RANDOM_SPLITS, VALIDATION_QUANTILES,
+};
+use super::window::window;
+use super::{sorted, Groups};
+use crate::capture;
+use crate::output::time;
+use host_tests::stats::nearest_rank;
+
+fn q(v: &[f64], p: f64, show: impl Fn(f64) -> String) -> String {
+    nearest_rank(v, p).map_or_else(|| "-".to_owned(), show)
+}
+
+/// The description table (markdown): per switch and kind, the events, the share of clean edges
+/// (one change), the bounce's P50/P90/P99/max, transitions, resolved flights and dwells, and
+/// unresolved intervals (chatter).
+#[must_use]
+pub fn describe(groups: &Groups<'_>, resolution: f64) -> String {
+    let mut out = String::new();
+    out.push_str(&format!(
+        "Resolution {}: shorter intervals are counted as chatter, not timed.\n\n",
+        time(resolution)
+    ));
+    out.push_str("| switch | kind | events | clean | bounce P50 | P90 | P99 | max | transitions P50 / P90 / max | flights per event (P50) | longest flight P50 / P90 | dwells per event (P50) | chatter per event P50 / P90 |\n");
+    out.push_str("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    for ((switch, kind), d) in groups {
+        #[allow(clippy::cast_precision_loss)]
+        let count = |f: &dyn Fn(&capture::Description) -> usize| {
+            sorted(d.iter().map(|x| f(x) as f64).collect())
+        };
+        let bounce = sorted(d.iter().map(|x| x.bounce).collect());
+        let transitions = count(&|x| x.transitions);
+        let flights = count(&|x| x.flights.len());
+        let dwells = count(&|x| x.dwells.len());
+        let chatter = count(&|x| x.chatter);
+        let longest = sorted(
+            d.iter()
+                .filter_map(|x| x.flights.iter().copied().reduce(f64::max))
+                .collect(),
+        );
+        let clean = d.iter().filter(|x| x.transitions <= 1).count();
+        let n = |x: f64| format!("{x:.0}");
+        out.push_str(&format!(
+            "| {switch} | {} | {} | {clean} | {} | {} | {} | {} | {} / {} / {} | {} | {} / {} | {} | {} / {} |\n",
+            kind.name(),
+            d.len(),
+            q(&bounce, 0.5, time),
+            q(&bounce, 0.9, time),
+            q(&bounce, 0.99, time),
+            q(&bounce, 1.0, time),
+            q(&transitions, 0.5, n),
+            q(&transitions, 0.9, n),
+            q(&transitions, 1.0, n),
+            q(&flights, 0.5, n),
+            q(&longest, 0.5, time),
+            q(&longest, 0.9, time),
+            q(&dwells, 0.5, n),
+            q(&chatter, 0.5, n),
+            q(&chatter, 0.9, n),
+        ));
+    }
+    out
+}
+
+fn ratio_text(r: Option<f64>) -> String {
+    match r {
+        None => "-".to_owned(),
+        Some(r) if r >= 1000.0 => format!("{r:.1e}"),
+        Some(r) => format!("{r:.2}"),
+    }
+}
+
+fn three(r: &[Option<f64>; 3]) -> String {
+    r.iter()
+        .map(|x| ratio_text(*x))
+        .collect::<Vec<_>>()
+        .join(" / ")
+}
+
+fn lognormal_text(l: Option<LogNormal>) -> String {
+    l.map_or_else(
+        || "-".to_owned(),
+        |l| format!("{} x/ {:.2}", time(l.median()), l.sigma.exp()),
+    )
+}
+
+/// The fit, the held-out checks and the windows (markdown), after the description.
+#[must_use]
+pub fn assess(groups: &Groups<'_>, percentile: f64, seed: u64) -> String {
+    let mut out = String::from(
+        "\n## Impact-model fit\n\nR: the median ratio of successive resolved flights of the first burst (quartiles beside it); \
+         the model holds when at least 5 pairs exist, 80 % of ratios are below 1 and the upper quartile too. \
+         Scale v0 / (Omega^2 |Delta|) = first flight / (2 R); Omega, Delta and v0 apart need the closing \
+         speed, the preload force or the resonance measured separately.\n\n\
+         | switch | kind | flight pairs | R (median) | quartiles | ratios below 1 | first flight P50 | v0 / (Omega^2 \\|Delta\\|) | impact model holds |\n\
+         |---|---|---:|---:|---:|---:|---:|---:|---|\n",
+    );
+    let mut model = String::from(
+        "\n## Fitted bounce model\n\nEach event is clean, one burst, or bounces again after a quiet interval of at \
+         least the burst gap (a late burst). Bursts and late-burst bounces are log-normal (median x/ geometric \
+         spread). The burst term is the impact model's (first flight / (1 - R), times 1 + the closed share: \
+         the dwell and chatter a Newton impact does not have) where it holds, else the observed bursts'. \
+         Last column: the model's quantiles over the capture's, on every event.\n\n\
+         | switch | kind | events | clean | one burst | burst bounce | closed share | late burst | late bounce | burst term | model / observed P50 / P90 / P99 |\n\
+         |---|---|---:|---:|---:|---:|---:|---:|---:|---|---:|\n",
+    );
+    let mut checks = String::from(
+        "\n## Held-out check\n\nFit on one half, predict the other half's bounce P50 / P90 / P99: \
+         predicted / observed, by the empirical part alone (the fitted half's own quantiles), by the \
+         impact model alone (each event's first flight / (1 - R); `-` where R >= 1 or nothing is observed), \
+         and by the fitted bounce model (`-` where a part that occurs has fewer than 3 events to fit).\n\n\
+         | switch | kind | split | events | observed P50 / P90 / P99 | empirical | impact model | fitted model |\n\
+         |---|---|---|---:|---:|---:|---:|---:|\n",
+    );
+    let mut spread = format!(
+        "\n## Held-out over {RANDOM_SPLITS} random halvings\n\nThe held-out ratio (predicted / observed) over \
+         {RANDOM_SPLITS} seeded random halvings: median and, in brackets, the 10th to 90th percentile; \
+         \"splits\": how many halvings the predictor could predict in.\n\n\
+         | switch | kind | predictor | splits | P50 | P90 | P99 |\n|---|---|---|---:|---:|---:|---:|\n"
+    );
+    let mut windows = format!(
+        "\n## Windows\n\nP{p} of the observed bounce, and P{p} of the fitted model, each widened by its own worst \
+         under-prediction in the held-out checks at that quantile; the window is the larger.\n\n\
+         | switch | kind | empirical | fitted model | window | explained by |\n|---|---|---:|---:|---:|---|\n",
+        p = percentile * 100.0
+    );
+    let pct = |x: f64| format!("{:.0} %", x * 100.0);
+    for ((switch, kind), d) in groups {
+        let refs: Vec<&capture::Description> = d.iter().collect();
+        let fit = ImpactFit::new(&refs);
+        let scale = fit
+            .first_flight
+            .zip(fit.restitution)
+            .map(|(f, r)| f / (2.0 * r));
+        out.push_str(&format!(
+            "| {switch} | {} | {} | {} | {} | {:.0} % | {} | {} | {} |\n",
+            kind.name(),
+            fit.pairs,
+            ratio_text(fit.restitution),
+            fit.quartiles
+                .map_or_else(|| "-".to_owned(), |(a, b)| format!("{a:.2} - {b:.2}")),
+            fit.shrinking * 100.0,
+            fit.first_flight.map_or_else(|| "-".to_owned(), time),
+            scale.map_or_else(|| "-".to_owned(), |s| format!("{s:.3e} s")),
+            if fit.holds() { "yes" } else { "no" },
+        ));
+        let m = BounceModel::fit(&refs);
+        let all = sorted(refs.iter().map(|x| x.bounce).collect());
+        let in_sample = VALIDATION_QUANTILES.map(|q| ratio(m.quantile(q), nearest_rank(&all, q)));
+        model.push_str(&format!(
+            "| {switch} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
+            kind.name(),
+            m.events,
+            pct(m.clean),
+            pct(m.single),
+            lognormal_text(m.burst),
+            m.closed_share
+                .map_or_else(|| "-".to_owned(), |c| format!("{c:.2}")),
+            pct(m.late),
+            lognormal_text(m.late_bounce),
+            if m.impact { "impact model" } else { "observed" },
+            three(&in_sample),
+        ));
+        let v = validations(&refs, seed);
+        for c in &v {
+            let observed = c
+                .observed
+                .iter()
+                .map(|x| x.map_or_else(|| "-".to_owned(), time))
+                .collect::<Vec<_>>()
+                .join(" / ");
+            checks.push_str(&format!(
+                "| {switch} | {} | {} | {} + {} | {observed} | {} | {} | {} |\n",
+                kind.name(),
+                c.split,
+                c.sizes.0,
+                c.sizes.1,
+                three(&c.empirical),
+                three(&c.model),
+                three(&c.fitted),
+            ));
+        }
+        for (name, r) in ["empirical", "impact model", "fitted model"]
+            .iter()
+            .zip(random_splits(&refs, seed, RANDOM_SPLITS))
+        {
+            let cell = |x: Option<RatioSpread>| {
+                x.map_or_else(
+                    || "-".to_owned(),
+                    |x| {
+                        format!(
+                            "{} ({} - {})",
+                            ratio_text(Some(x.p50)),
+                            ratio_text(Some(x.p10)),
+                            ratio_text(Some(x.p90))
+                        )
+                    },
+                )
+            };
+            spread.push_str(&format!(
+                "| {switch} | {} | {name} | {} | {} | {} | {} |\n",
+                kind.name(),
+                r.iter().flatten().map(|x| x.predicted).max().unwrap_or(0),
+                cell(r[0]),
+                cell(r[1]),
+                cell(r[2]),
+            ));
+        }
+        let explained = if fit.holds() {
+            "impact model and empirical terms"
+        } else {
+            "empirical terms only"
+        };
+        let w = window(&refs, percentile, &v);
+        let show = |x: Option<f64>| x.map_or_else(|| "-".to_owned(), time);
+        windows.push_str(&format!(
+            "| {switch} | {} | {} | {} | {} | {explained} |\n",
+            kind.name(),
+            show(w.empirical),
+            show(w.fitted),
+            show(w.recommended()),
+        ));
+    }
+    out + &model + &checks + &spread + &windows
+}
