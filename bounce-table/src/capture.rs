@@ -458,10 +458,81 @@ fn timescale(spec: &str) -> Option<f64> {
     Some(n * unit)
 }
 
-/// Reads the JSON Lines of the bouncy-button capture (`../shared/data/`): one test per line,
-/// `dataset`, `kind`, `events` `[[t_ns, level], ...]` (the first entry is the level before the
-/// test; level 1 = open), `section`, `section_invalid`. Tests in sections marked invalid, and in
-/// the sections named in `skip`, are skipped and counted.
+/// What a capture's reader left out, and why: one count per reason, in a fixed order.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct Skipped {
+    /// Tests in a section the capture marks invalid on their own line.
+    pub marked_invalid: usize,
+    /// Tests in a section of the same name that the capture marks invalid for another switch
+    /// (the same test protocol, logged before the instrument had the flag).
+    pub marked_invalid_elsewhere: usize,
+    /// Tests in a section named by `--skip-section`.
+    pub named: usize,
+    /// Events that hold several presses: a quiet interval inside them longer than the one that
+    /// separates events (`--quiet`).
+    pub several_presses: usize,
+    /// The sections behind the first two counts.
+    pub sections: Vec<String>,
+}
+
+impl Skipped {
+    /// Tests or events left out in all.
+    #[must_use]
+    pub fn total(&self) -> usize {
+        self.marked_invalid + self.marked_invalid_elsewhere + self.named + self.several_presses
+    }
+
+    /// One sentence for the report: how many were left out and why (empty if none).
+    #[must_use]
+    pub fn describe(&self, quiet: f64) -> String {
+        let mut parts = Vec::new();
+        let sections = self.sections.join(", ");
+        if self.marked_invalid > 0 {
+            parts.push(format!(
+                "{} tests in sections the capture marks invalid ({sections})",
+                self.marked_invalid
+            ));
+        }
+        if self.marked_invalid_elsewhere > 0 {
+            parts.push(format!(
+                "{} tests in sections of the same name that the capture marks invalid for another switch",
+                self.marked_invalid_elsewhere
+            ));
+        }
+        if self.named > 0 {
+            parts.push(format!("{} tests in sections named by --skip-section", self.named));
+        }
+        if self.several_presses > 0 {
+            parts.push(format!(
+                "{} events that hold several presses (quiet for over --quiet {quiet} s inside)",
+                self.several_presses
+            ));
+        }
+        if parts.is_empty() {
+            String::new()
+        } else {
+            format!("Left out: {}.", parts.join("; "))
+        }
+    }
+}
+
+/// Leaves out the events that hold several presses: a quiet interval inside them longer than
+/// `quiet` (s), the gap that starts a new event in a stream. Counts them in `skipped`.
+#[must_use]
+pub fn drop_several_presses(events: Vec<Event>, quiet: f64, skipped: &mut Skipped) -> Vec<Event> {
+    let (keep, drop): (Vec<Event>, Vec<Event>) = events
+        .into_iter()
+        .partition(|e| e.changes.windows(2).all(|w| w[1] - w[0] <= quiet));
+    skipped.several_presses += drop.len();
+    keep
+}
+
+/// Reads the JSON Lines of the bouncy-button capture: one test per line, `dataset`, `kind`,
+/// `events` `[[t_ns, level], ...]` (the first entry is the level before the test; level 1 =
+/// open), `section`, `section_invalid`. Tests are left out, and counted per reason, when their
+/// section is marked invalid, when a section of the same name is marked invalid for another
+/// dataset of the file (the same protocol, logged by an instrument that did not yet mark it),
+/// or when `skip` names the section.
 ///
 /// # Errors
 /// A line that is not JSON, or misses a field, or whose events do not start with a level, go
@@ -470,9 +541,28 @@ pub fn read_jsonl(
     file: &str,
     text: &str,
     skip: &[String],
-) -> Result<(Vec<Event>, usize), CaptureError> {
+) -> Result<(Vec<Event>, Skipped), CaptureError> {
+    // First pass: the sections marked invalid anywhere in the file.
+    let mut invalid: Vec<String> = Vec::new();
+    for (i, raw) in text.lines().enumerate() {
+        if raw.trim().is_empty() {
+            continue;
+        }
+        let v: Value = serde_json::from_str(raw)
+            .map_err(|e| error(file, i + 1, format!("not JSON: {e}")))?;
+        if v.get("section_invalid").and_then(Value::as_bool) == Some(true) {
+            if let Some(name) = v.get("section").and_then(Value::as_str) {
+                if !invalid.iter().any(|s| s == name) {
+                    invalid.push(name.to_owned());
+                }
+            }
+        }
+    }
     let mut events = Vec::new();
-    let mut skipped = 0;
+    let mut skipped = Skipped {
+        sections: invalid.clone(),
+        ..Skipped::default()
+    };
     for (i, raw) in text.lines().enumerate() {
         let line = i + 1;
         if raw.trim().is_empty() {
@@ -481,10 +571,16 @@ pub fn read_jsonl(
         let v: Value =
             serde_json::from_str(raw).map_err(|e| error(file, line, format!("not JSON: {e}")))?;
         let section = v.get("section").and_then(Value::as_str);
-        if v.get("section_invalid").and_then(Value::as_bool) == Some(true)
-            || section.is_some_and(|name| skip.iter().any(|s| s == name))
-        {
-            skipped += 1;
+        if v.get("section_invalid").and_then(Value::as_bool) == Some(true) {
+            skipped.marked_invalid += 1;
+            continue;
+        }
+        if section.is_some_and(|name| invalid.iter().any(|s| s == name)) {
+            skipped.marked_invalid_elsewhere += 1;
+            continue;
+        }
+        if section.is_some_and(|name| skip.iter().any(|s| s == name)) {
+            skipped.named += 1;
             continue;
         }
         let field = |name: &str| {

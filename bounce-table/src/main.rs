@@ -201,8 +201,8 @@ fn main() -> ExitCode {
                     }
                 }
                 print!("{}", calibrate::describe(&groups, options.resolution));
-                if skipped > 0 {
-                    println!("\n{skipped} tests skipped (sections marked invalid or named by --skip-section).");
+                if skipped.total() > 0 {
+                    println!("\n{}", skipped.describe(options.quiet));
                 }
                 print!(
                     "{}",

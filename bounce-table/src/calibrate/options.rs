@@ -24,7 +24,8 @@ pub struct Options {
     pub resolution: f64,
     /// A quiet interval at least this long ends a burst (s).
     pub burst_gap: f64,
-    /// A change more than this after the previous one starts a new event (s); streams only.
+    /// A change more than this after the previous one starts a new event in a stream (s); a
+    /// JSON Lines event with a quiet interval this long inside holds several presses.
     pub quiet: f64,
     /// The VCD signal.
     pub signal: Option<String>,
@@ -146,12 +147,14 @@ pub fn options(args: &[String]) -> Result<Options, String> {
     })
 }
 
-/// Reads the capture into events; the count of tests skipped (sections marked invalid or
-/// named by `--skip-section`).
+/// Reads the capture into events, leaving out what cannot be one press or release (see
+/// [`capture::Skipped`]): sections the capture marks invalid, sections named by
+/// `--skip-section`, and events with a quiet interval longer than `--quiet` inside (several
+/// presses).
 ///
 /// # Errors
 /// The file cannot be read, or its content is malformed (named file and line).
-pub fn load(o: &Options) -> Result<(Vec<Event>, usize), CaptureError> {
+pub fn load(o: &Options) -> Result<(Vec<Event>, capture::Skipped), CaptureError> {
     let text = std::fs::read_to_string(&o.file).map_err(|e| CaptureError {
         file: o.file.clone(),
         line: 0,
@@ -160,18 +163,20 @@ pub fn load(o: &Options) -> Result<(Vec<Event>, usize), CaptureError> {
     let name = std::path::Path::new(&o.file)
         .file_stem()
         .map_or_else(|| o.file.clone(), |s| s.to_string_lossy().into_owned());
-    match o.format {
-        Format::Jsonl => capture::read_jsonl(&o.file, &text, &o.skip_sections),
-        Format::Csv => Ok((
+    let (events, mut skipped) = match o.format {
+        Format::Jsonl => capture::read_jsonl(&o.file, &text, &o.skip_sections)?,
+        Format::Csv => (
             capture::read_csv(&o.file, &text, o.polarity)?.segment(&name, o.quiet),
-            0,
-        )),
-        Format::Vcd => Ok((
+            capture::Skipped::default(),
+        ),
+        Format::Vcd => (
             capture::read_vcd(&o.file, &text, o.signal.as_deref(), o.polarity)?
                 .segment(&name, o.quiet),
-            0,
-        )),
-    }
+            capture::Skipped::default(),
+        ),
+    };
+    let events = capture::drop_several_presses(events, o.quiet, &mut skipped);
+    Ok((events, skipped))
 }
 
 #[cfg(test)]
