@@ -500,7 +500,10 @@ impl Skipped {
             ));
         }
         if self.named > 0 {
-            parts.push(format!("{} tests in sections named by --skip-section", self.named));
+            parts.push(format!(
+                "{} tests in sections named by --skip-section",
+                self.named
+            ));
         }
         if self.several_presses > 0 {
             parts.push(format!(
@@ -548,8 +551,8 @@ pub fn read_jsonl(
         if raw.trim().is_empty() {
             continue;
         }
-        let v: Value = serde_json::from_str(raw)
-            .map_err(|e| error(file, i + 1, format!("not JSON: {e}")))?;
+        let v: Value =
+            serde_json::from_str(raw).map_err(|e| error(file, i + 1, format!("not JSON: {e}")))?;
         if v.get("section_invalid").and_then(Value::as_bool) == Some(true) {
             if let Some(name) = v.get("section").and_then(Value::as_str) {
                 if !invalid.iter().any(|s| s == name) {

@@ -178,10 +178,7 @@ fn main() -> ExitCode {
                 }
                 let groups = calibrate::group(&events, options.resolution, options.burst_gap);
                 if let Some(rust) = options.export {
-                    print!(
-                        "{}",
-                        calibrate::export(&groups, options.percentile, options.seed, rust)
-                    );
+                    print!("{}", calibrate::export(&groups, options.percentile, rust));
                     return ExitCode::SUCCESS;
                 }
                 if let Some(dir) = &options.plot {
@@ -200,7 +197,14 @@ fn main() -> ExitCode {
                         }
                     }
                 }
-                print!("{}", calibrate::describe(&groups, options.resolution));
+                println!(
+                    "# Windows\n\n{}",
+                    calibrate::summary(&groups, options.percentile, options.burst_gap)
+                );
+                print!(
+                    "## Description\n\n{}",
+                    calibrate::describe(&groups, options.resolution)
+                );
                 if skipped.total() > 0 {
                     println!("\n{}", skipped.describe(options.quiet));
                 }

@@ -128,7 +128,7 @@ fn exported_windows_compile_as_c_and_rust() {
     let header = dir.join("windows.h");
     std::fs::write(
         &header,
-        bounce_table::calibrate::export(&groups, 0.99, 1, false),
+        bounce_table::calibrate::export(&groups, 0.99, false),
     )
     .unwrap();
     let c = dir.join("use.c");
@@ -142,7 +142,7 @@ fn exported_windows_compile_as_c_and_rust() {
     .unwrap();
     common::compile_c(&c, &dir);
     let rs = dir.join("windows.rs");
-    let constants = bounce_table::calibrate::export(&groups, 0.99, 1, true);
+    let constants = bounce_table::calibrate::export(&groups, 0.99, true);
     std::fs::write(
         &rs,
         format!("{constants}\npub fn w() -> u64 {{ SYNTHETIC_PRESS_WINDOW_NS }}\n"),
@@ -152,9 +152,9 @@ fn exported_windows_compile_as_c_and_rust() {
     // The window exported is the recommended one (nanoseconds, rounded up), at least the
     // bounce of these identical presses.
     let d: Vec<_> = groups.values().flatten().collect();
-    let window = bounce_table::calibrate::window(&d, 0.99, &validations(&d, 1));
-    let recommended = window.recommended().unwrap();
-    assert!(recommended >= d[0].bounce && recommended >= window.fitted.unwrap());
+    let window = bounce_table::calibrate::window(&d, 0.99);
+    let recommended = window.recommended();
+    assert!(recommended >= d[0].bounce && recommended >= window.predictive.unwrap());
     let want = format!(
         "SYNTHETIC_PRESS_WINDOW_NS: u64 = {};",
         (recommended * 1e9).ceil()
@@ -303,6 +303,7 @@ fn the_mixture_quantile_is_the_inverse_of_its_distribution() {
         late_bounce: None,
         impact: false,
         closed_share: None,
+        predictive: None,
     };
     for (p, z) in [
         (0.5, 0.0),

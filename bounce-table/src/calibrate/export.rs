@@ -1,13 +1,12 @@
 //! The windows as C `#define`s or Rust constants.
 
-use super::heldout::validations;
 use super::window::window;
 use super::Groups;
 use crate::capture;
 
 /// The windows as C `#define`s or Rust constants (nanoseconds, rounded up).
 #[must_use]
-pub fn export(groups: &Groups<'_>, percentile: f64, seed: u64, rust: bool) -> String {
+pub fn export(groups: &Groups<'_>, percentile: f64, rust: bool) -> String {
     let mut out = String::new();
     let guard = "BOUNCE_CALIBRATED_H";
     if rust {
@@ -23,10 +22,7 @@ pub fn export(groups: &Groups<'_>, percentile: f64, seed: u64, rust: bool) -> St
     }
     for ((switch, kind), d) in groups {
         let refs: Vec<&capture::Description> = d.iter().collect();
-        let v = validations(&refs, seed);
-        let Some(w) = window(&refs, percentile, &v).recommended() else {
-            continue;
-        };
+        let w = window(&refs, percentile).recommended();
         #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
         let ns = (w * 1e9).ceil() as u64;
         let id = crate::output::identifier(&format!("{switch} {}", kind.name()));

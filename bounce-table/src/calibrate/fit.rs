@@ -1,6 +1,7 @@
 //! The fits: what the impact model takes from a capture's timing ([`ImpactFit`]), log-normal
 //! parts ([`LogNormal`]) and the bounce model with empirical terms ([`BounceModel`]).
 
+use super::predictive::Predictive;
 use super::sorted;
 use crate::capture;
 use host_tests::stats::nearest_rank;
@@ -166,6 +167,9 @@ pub struct BounceModel {
     /// Median (dwell + chatter time) / flight time over the one-burst events with a resolved
     /// flight.
     pub closed_share: Option<f64>,
+    /// The same parts' posterior predictive: the bounce of the next event, with the
+    /// uncertainty of shares and spreads fitted to few events (`None` with nothing to spread).
+    pub predictive: Option<Predictive>,
 }
 
 impl BounceModel {
@@ -221,6 +225,7 @@ impl BounceModel {
             late_bounce: LogNormal::fit(&late),
             impact,
             closed_share,
+            predictive: Predictive::fit(clean.len(), &[&burst, &late]),
         }
     }
 

@@ -6,6 +6,7 @@ mod fit;
 mod heldout;
 mod options;
 mod plot;
+mod predictive;
 mod report;
 mod window;
 
@@ -20,8 +21,9 @@ pub use heldout::{
 };
 pub use options::{load, options, Format, Options};
 pub use plot::plot;
-pub use report::{assess, describe};
-pub use window::{window, Window};
+pub use predictive::{Part, Predictive};
+pub use report::{assess, describe, summary};
+pub use window::{chronological_cover, window, Window, FAR_BEYOND};
 
 fn sorted(mut v: Vec<f64>) -> Vec<f64> {
     v.sort_by(f64::total_cmp);

@@ -5,7 +5,7 @@ use super::fit::{BounceModel, ImpactFit, LogNormal};
 use super::heldout::{
     random_splits, ratio, validations, RatioSpread, RANDOM_SPLITS, VALIDATION_QUANTILES,
 };
-use super::window::window;
+use super::window::{chronological_cover, window, FAR_BEYOND};
 use super::{sorted, Groups};
 use crate::capture;
 use crate::output::time;
@@ -123,9 +123,11 @@ pub fn assess(groups: &Groups<'_>, percentile: f64, seed: u64) -> String {
          | switch | kind | predictor | splits | P50 | P90 | P99 |\n|---|---|---|---:|---:|---:|---:|\n"
     );
     let mut windows = format!(
-        "\n## Windows\n\nP{p} of the observed bounce, and P{p} of the fitted model, each widened by its own worst \
-         under-prediction in the held-out checks at that quantile; the window is the larger.\n\n\
-         | switch | kind | empirical | fitted model | window | explained by |\n|---|---|---:|---:|---:|---|\n",
+        "\n## Windows\n\nP{p} of the fitted model's posterior predictive: the bounce of the next event, with \
+         the uncertainty of shares and log-normal spreads fitted to this many events (Student t parts, \
+         shares (k + 1) / (n + 3), a part with fewer than 3 events borrowing the others' spread); never \
+         below the largest bounce observed. A window more than {FAR_BEYOND} times the largest observed says why.\n\n\
+         | switch | kind | largest observed | predictive P{p} | window | note | explained by |\n|---|---|---:|---:|---:|---|---|\n",
         p = percentile * 100.0
     );
     let pct = |x: f64| format!("{:.0} %", x * 100.0);
@@ -215,15 +217,62 @@ pub fn assess(groups: &Groups<'_>, percentile: f64, seed: u64) -> String {
         } else {
             "empirical terms only"
         };
-        let w = window(&refs, percentile, &v);
-        let show = |x: Option<f64>| x.map_or_else(|| "-".to_owned(), time);
+        let w = window(&refs, percentile);
         windows.push_str(&format!(
-            "| {switch} | {} | {} | {} | {} | {explained} |\n",
+            "| {switch} | {} | {} | {} | {} | {} | {explained} |\n",
             kind.name(),
-            show(w.empirical),
-            show(w.fitted),
-            show(w.recommended()),
+            time(w.observed),
+            w.predictive.map_or_else(|| "-".to_owned(), time),
+            time(w.recommended()),
+            w.reason().unwrap_or_default(),
         ));
     }
     out + &model + &checks + &spread + &windows
+}
+
+/// One plain line per switch and kind, for the top of the report: the window to use and what
+/// it rests on, how the same rule held on the capture's later half when fitted on its earlier
+/// half, and the share of late bursts.
+#[must_use]
+pub fn summary(groups: &Groups<'_>, percentile: f64, burst_gap: f64) -> String {
+    let mut out = String::new();
+    for ((switch, kind), d) in groups {
+        let refs: Vec<&capture::Description> = d.iter().collect();
+        let w = window(&refs, percentile);
+        let (covered, later, half) = chronological_cover(&refs, percentile, 0.5);
+        let late: Vec<f64> = d
+            .iter()
+            .filter(|x| x.bursts > 1)
+            .map(|x| x.bounce)
+            .collect();
+        let what = if w.predictive.is_some_and(|p| p >= w.observed) {
+            format!("P{} of the fitted model's predictive", percentile * 100.0)
+        } else {
+            "the largest bounce observed".to_owned()
+        };
+        #[allow(clippy::cast_precision_loss)]
+        let late_text = if late.is_empty() {
+            format!("none bounces again after a quiet {}", time(burst_gap))
+        } else {
+            format!(
+                "{:.0} % bounce again after a quiet {}, up to {} after the first change",
+                late.len() as f64 * 100.0 / d.len() as f64,
+                time(burst_gap),
+                time(late.iter().copied().fold(0.0, f64::max))
+            )
+        };
+        out.push_str(&format!(
+            "- {switch} {}: use {} ({what}, {} events); the same rule fitted on the earlier half ({}) covers {covered} of the {later} later {}; {late_text}.{}\n",
+            kind.name(),
+            time(w.recommended()),
+            d.len(),
+            time(half.recommended()),
+            match kind {
+                capture::Kind::Press => "presses",
+                capture::Kind::Release => "releases",
+            },
+            w.reason().map_or_else(String::new, |r| format!(" Far beyond the capture: {r}.")),
+        ));
+    }
+    out
 }

@@ -1,62 +1,80 @@
 //! The debounce windows a capture gives.
 
 use super::fit::BounceModel;
-use super::heldout::{Ratios, Validation, VALIDATION_QUANTILES};
-use super::sorted;
 use crate::capture;
-use host_tests::stats::nearest_rank;
 
-/// A debounce window from a capture, two ways, and the one recommended.
+/// A debounce window from a capture: the fitted model's predictive percentile, never below
+/// the largest bounce observed.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Window {
-    /// The percentile of the observed bounce, widened by the worst held-out under-prediction
-    /// of the empirical quantiles at the nearest checked quantile (s).
-    pub empirical: Option<f64>,
-    /// The percentile of the [`BounceModel`] fitted to every event, widened by the model's
-    /// worst held-out under-prediction at the nearest checked quantile (s).
-    pub fitted: Option<f64>,
+    /// The largest bounce observed (s; 0 with no events).
+    pub observed: f64,
+    /// The percentile of the fitted model's posterior predictive (s): the bounce of the next
+    /// event, with the uncertainty of a fit to this many events (`None` when no part has a
+    /// spread to fit).
+    pub predictive: Option<f64>,
+    /// Bouncing events behind the fit.
+    pub bouncing: usize,
 }
 
+/// Beyond this multiple of the largest bounce observed, a window says why.
+pub const FAR_BEYOND: f64 = 2.0;
+
 impl Window {
-    /// The larger of the two: a window must cover the bounce, and each estimate has only the
-    /// capture's events behind it.
+    /// The window: the predictive percentile, or the largest bounce observed if that is
+    /// longer (a window below a bounce already seen is wrong whatever the model says).
     #[must_use]
-    pub fn recommended(&self) -> Option<f64> {
-        match (self.empirical, self.fitted) {
-            (Some(a), Some(b)) => Some(a.max(b)),
-            (a, b) => a.or(b),
+    pub fn recommended(&self) -> f64 {
+        self.predictive
+            .map_or(self.observed, |p| p.max(self.observed))
+    }
+
+    /// Why the window is far beyond every observed bounce (more than [`FAR_BEYOND`] times the
+    /// largest), or why it is only the largest observed; `None` otherwise.
+    #[must_use]
+    pub fn reason(&self) -> Option<String> {
+        match self.predictive {
+            None if self.observed > 0.0 => Some(format!(
+                "only the largest observed: {} bouncing events give no spread to extrapolate",
+                self.bouncing
+            )),
+            Some(p) if p > FAR_BEYOND * self.observed => Some(format!(
+                "{:.1} times the largest observed: {} bouncing events spread widely, and the tail of a fit to so few reaches far",
+                p / self.observed,
+                self.bouncing
+            )),
+            _ => None,
         }
     }
 }
 
-/// The worst under-prediction (observed / predicted, at least 1) among `ratios` at the checked
-/// quantile nearest `percentile`.
-fn worst(checks: &[Validation], percentile: f64, ratios: Ratios) -> f64 {
-    let nearest = VALIDATION_QUANTILES
-        .iter()
-        .enumerate()
-        .min_by(|a, b| {
-            (a.1 - percentile)
-                .abs()
-                .total_cmp(&(b.1 - percentile).abs())
-        })
-        .map_or(0, |(i, _)| i);
-    checks
-        .iter()
-        .filter_map(|v| ratios(v)[nearest])
-        .fold(1.0_f64, |w, r| if r > 0.0 { w.max(1.0 / r) } else { w })
+/// The window of one switch and kind at `percentile` of the fitted model's predictive.
+#[must_use]
+pub fn window(d: &[&capture::Description], percentile: f64) -> Window {
+    let model = BounceModel::fit(d);
+    Window {
+        observed: d.iter().map(|x| x.bounce).fold(0.0, f64::max),
+        predictive: model.predictive.as_ref().map(|p| p.quantile(percentile)),
+        bouncing: d.iter().filter(|x| x.bounce > 0.0).count(),
+    }
 }
 
-/// The windows of one switch and kind at `percentile`, from its events and their held-out
-/// checks.
+/// The chronological held-out check of a window: fitted on the earlier `fraction` of `d` (in
+/// capture order), how many of the later events it covers, and of how many; and the window.
 #[must_use]
-pub fn window(d: &[&capture::Description], percentile: f64, checks: &[Validation]) -> Window {
-    let all = sorted(d.iter().map(|x| x.bounce).collect());
-    Window {
-        empirical: nearest_rank(&all, percentile)
-            .map(|b| b * worst(checks, percentile, |v| &v.empirical)),
-        fitted: BounceModel::fit(d)
-            .quantile(percentile)
-            .map(|b| b * worst(checks, percentile, |v| &v.fitted)),
-    }
+pub fn chronological_cover(
+    d: &[&capture::Description],
+    percentile: f64,
+    fraction: f64,
+) -> (usize, usize, Window) {
+    #[allow(
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        clippy::cast_precision_loss
+    )]
+    let cut = ((d.len() as f64 * fraction).floor() as usize).min(d.len());
+    let (earlier, later) = d.split_at(cut);
+    let w = window(earlier, percentile);
+    let covered = later.iter().filter(|x| x.bounce <= w.recommended()).count();
+    (covered, later.len(), w)
 }
