@@ -96,7 +96,7 @@ impl Predictive {
             };
             #[allow(clippy::cast_precision_loss)]
             let scale = spread * (1.0 + 1.0 / l.len() as f64).sqrt();
-            if !(scale > 0.0) {
+            if scale.is_nan() || scale <= 0.0 {
                 return None;
             }
             fitted.push(Part {
