@@ -9,6 +9,8 @@ pub mod capture;
 pub mod eval;
 pub mod output;
 pub mod plot;
+pub mod priors;
+pub mod replay;
 pub mod scene_input;
 pub mod scenes;
 pub mod spreads;

@@ -11,11 +11,14 @@ use std::process::ExitCode;
 use bounce_table::analysis::{analyse, Settings};
 use bounce_table::output::{identifier, render, Format};
 use bounce_table::scenes::{catalogue, read, FileError};
-use bounce_table::{calibrate, eval, plot, scene_input::SceneInput};
+use bounce_table::{calibrate, eval, plot, replay, scene_input::SceneInput};
 
 const USAGE: &str = "usage: bounce-table [OPTIONS] [SCENE_FILE]
        bounce-table eval [--method exact|map|averaged|closed|auto] [--tolerance X]
                          [--precision f32|f64] [--nodes N] < scenes.jsonl
+       bounce-table replay [--period S] [--split F] [--time-scale X] [--switch-type TYPE]
+                           [--format table|markdown|json] [--plot DIR]
+                           [--capture-format jsonl|csv|vcd] [calibrate's capture options] CAPTURE
        bounce-table calibrate [--format jsonl|csv|vcd] [--resolution S] [--burst-gap S]
                               [--quiet S] [--signal NAME] [--active-high]
                               [--skip-section NAME]
@@ -37,6 +40,19 @@ Options:
   --seed S             Monte Carlo seed (1)
   --threads N          worker threads (all cores)
   --plot DIR           also write NAME-envelope.svg and NAME-motion.svg for each switch
+
+replay: the benchmark of debouncers on a real capture. Per switch and kind, the earlier tests
+(--split, 0.5) calibrate and the later ones are replayed through our debouncer with the
+calibrated windows (hold-off and confirm), with the switch type's prior window (physics-prior:
+the type from the switch's name or --switch-type), and through peers re-implemented from their
+documentation at their defaults (QMK, ZMK, Bounce2, debouncr, Linux and Zephyr gpio-keys).
+Rows: false edges (reported edges beyond each test's one) and latency P50/P99 from the first
+contact change.
+  --period S           seconds between samples of the polled debouncers (1e-3)
+  --split F            the earlier share of the tests that calibrates (0.5)
+  --time-scale X       every time multiplied by X (10: contactor-like, 0.1: reed-like)
+  --switch-type TYPE   push-button, rocker, toggle, slide, tactile or hand-operated
+  --plot DIR           also write SWITCH-KIND-replay.svg: false edges against latency
 
 calibrate: describes a capture (JSON Lines of the bouncy-button format, a CSV of `time,level`
 rows, or a VCD; format from the extension) per switch and kind (bounce P50/P90/P99/max,
@@ -140,6 +156,63 @@ fn write_atomically(path: &str, text: &str) -> std::io::Result<()> {
     })
 }
 
+/// `bounce-table replay`.
+fn replay_main(args: &[String]) -> ExitCode {
+    let request = match replay::options(args) {
+        Ok(r) => r,
+        Err(message) => {
+            eprintln!("bounce-table replay: {message}\n{USAGE}");
+            return ExitCode::from(2);
+        }
+    };
+    let (events, skipped) = match calibrate::load(&request.capture) {
+        Ok(x) => x,
+        Err(e) => {
+            eprintln!("bounce-table replay: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let lines = match replay::run(&events, &request.capture, &request.settings) {
+        Ok(lines) => lines,
+        Err(e) => {
+            eprintln!("bounce-table replay: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    if let Some(dir) = &request.plot {
+        let mut groups: std::collections::BTreeMap<(&str, &str), Vec<&replay::Line>> =
+            std::collections::BTreeMap::new();
+        for l in &lines {
+            groups
+                .entry((l.switch.as_str(), l.kind.name()))
+                .or_default()
+                .push(l);
+        }
+        for ((switch, kind), group) in groups {
+            let name = format!(
+                "{dir}/{}-{kind}-replay.svg",
+                identifier(switch).to_lowercase()
+            );
+            if let Err(e) = std::fs::create_dir_all(dir)
+                .and_then(|()| write_atomically(&name, &replay::plot(&group)))
+            {
+                eprintln!("bounce-table replay: {name}: {e}");
+                return ExitCode::FAILURE;
+            }
+        }
+    }
+    match request.output {
+        replay::Output::Json => print!("{}", replay::json(&lines)),
+        replay::Output::Markdown => {
+            if skipped.total() > 0 {
+                println!("{}\n", skipped.describe(request.capture.quiet));
+            }
+            print!("{}", replay::markdown(&lines));
+        }
+    }
+    ExitCode::SUCCESS
+}
+
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     if args.first().is_some_and(|a| a == "eval") {
@@ -158,6 +231,9 @@ fn main() -> ExitCode {
                 ExitCode::FAILURE
             }
         };
+    }
+    if args.first().is_some_and(|a| a == "replay") {
+        return replay_main(args.get(1..).unwrap_or_default());
     }
     if args.first().is_some_and(|a| a == "calibrate") {
         let options = match calibrate::options(args.get(1..).unwrap_or_default()) {

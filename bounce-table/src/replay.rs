@@ -1,0 +1,930 @@
+//! `bounce-table replay`: debouncers replayed on a real capture.
+//!
+//! For each switch and kind (press, release), the tests are taken in capture order: the earlier
+//! part (`--split`, half by default) calibrates, the later part is replayed. A window is set now
+//! and used later, so the split is chronological. Every debouncer starts each test settled at
+//! the contact's level before it and is run until long after the test's last change; the
+//! polled ones sample every `--period` (1 ms by default, the scan rate of the keyboard
+//! firmwares below) at a phase that differs from test to test and is the same for every
+//! debouncer, the interrupt-driven ones see every change at its time.
+//!
+//! Per row: the reported edges beyond the one true edge of each test (`false_edges`), and the
+//! latency from the first contact change to the first reported edge (P50, P99 over the tests).
+//!
+//! The peers are re-implemented from their documentation, each at its documented default:
+//!
+//! - QMK (`docs/feature_debounce_type.md`), `DEBOUNCE` 5 ms: `sym_defer_pk` reports a key's
+//!   change once it has not changed for 5 ms; `sym_eager_pk` reports at once and then ignores the
+//!   key for 5 ms; `asym_eager_defer_pk` reports a press at once (then ignores the key for 5 ms)
+//!   and a release once the key has not changed for 5 ms.
+//! - ZMK (`kscan` debouncing docs): an integrator per key, counting up the milliseconds the key
+//!   differs from its debounced state and down the milliseconds it agrees; it flips at
+//!   `debounce-press-ms` / `debounce-release-ms`, both 5 by default, at 1 ms scans.
+//! - Bounce2 (its README), `interval` 10 ms: the default mode reports once the input has been
+//!   stable for the interval; `BOUNCE_LOCK_OUT` reports at once and ignores the input for the
+//!   interval.
+//! - debouncr (the crate itself, `debounce_stateful_4/8/16`): a change is reported after 4, 8 or
+//!   16 consecutive equal samples.
+//! - Linux `gpio-keys` (its binding, `debounce-interval` 5 ms): every edge interrupt restarts a
+//!   5 ms timer; when it expires the pin is read and reported if it changed.
+//! - Zephyr `gpio-keys` (input subsystem; `debounce-interval-ms`, default 30): the same
+//!   algorithm, at 30 ms.
+
+use std::collections::BTreeMap;
+
+use contact_bounce::{Mode, State, Windows};
+
+use crate::calibrate::{self, window};
+use crate::capture::{Event, Kind};
+use crate::output::time;
+use crate::priors::{self, Prior};
+use host_tests::stats::nearest_rank;
+
+/// One test to replay: the contact before it and its changes (s, the first at 0).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Trace {
+    /// Closed before the first change.
+    pub closed_before: bool,
+    /// Change times (s), nondecreasing, the first at 0.
+    pub changes: Vec<f64>,
+}
+
+impl Trace {
+    /// The trace of an event, its times multiplied by `scale`.
+    #[must_use]
+    pub fn of(e: &Event, scale: f64) -> Self {
+        let t0 = e.changes.first().copied().unwrap_or(0.0);
+        Self {
+            closed_before: e.kind == Kind::Release,
+            changes: e.changes.iter().map(|t| (t - t0) * scale).collect(),
+        }
+    }
+
+    /// The contact at `t`: closed or not.
+    #[must_use]
+    pub fn closed_at(&self, t: f64) -> bool {
+        let flips = self.changes.partition_point(|&c| c <= t);
+        self.closed_before ^ (flips % 2 == 1)
+    }
+
+    /// The contact after the last change.
+    #[must_use]
+    pub fn closed_after(&self) -> bool {
+        self.closed_before ^ (self.changes.len() % 2 == 1)
+    }
+
+    fn last(&self) -> f64 {
+        self.changes.last().copied().unwrap_or(0.0)
+    }
+}
+
+/// Whether `span` (s) has passed from `start` to `now`, to rounding: sample times are
+/// `(phase + k) * period`, whose differences are whole periods only to within an ulp.
+fn passed(now: f64, start: f64, span: f64) -> bool {
+    now - start >= span * (1.0 - 1e-9)
+}
+
+/// A debouncer that samples the pin: fed the time (s) and the contact (closed or not) at each
+/// sample, it returns the new debounced state when it reports a change.
+pub trait Polled {
+    /// Settled at `closed`.
+    fn reset(&mut self, closed: bool);
+    /// One sample.
+    fn sample(&mut self, now: f64, closed: bool) -> Option<bool>;
+}
+
+/// QMK's `sym_defer_pk`.
+#[derive(Debug, Clone)]
+pub struct QmkSymDefer {
+    debounce: f64,
+    cooked: bool,
+    raw: bool,
+    changed_at: Option<f64>,
+}
+
+impl Polled for QmkSymDefer {
+    fn reset(&mut self, closed: bool) {
+        (self.cooked, self.raw, self.changed_at) = (closed, closed, None);
+    }
+    fn sample(&mut self, now: f64, closed: bool) -> Option<bool> {
+        if closed != self.raw {
+            self.raw = closed;
+            self.changed_at = Some(now);
+        }
+        let t0 = self.changed_at?;
+        if !passed(now, t0, self.debounce) {
+            return None;
+        }
+        self.changed_at = None;
+        (self.cooked != self.raw).then(|| {
+            self.cooked = self.raw;
+            self.cooked
+        })
+    }
+}
+
+/// QMK's `sym_eager_pk` and Bounce2's lock-out mode: report at once, then ignore the pin for
+/// the window.
+#[derive(Debug, Clone)]
+pub struct LockOut {
+    window: f64,
+    cooked: bool,
+    since: f64,
+}
+
+impl Polled for LockOut {
+    fn reset(&mut self, closed: bool) {
+        (self.cooked, self.since) = (closed, f64::NEG_INFINITY);
+    }
+    fn sample(&mut self, now: f64, closed: bool) -> Option<bool> {
+        if !passed(now, self.since, self.window) || closed == self.cooked {
+            return None;
+        }
+        self.cooked = closed;
+        self.since = now;
+        Some(closed)
+    }
+}
+
+/// QMK's `asym_eager_defer_pk`: presses eager, releases deferred.
+#[derive(Debug, Clone)]
+pub struct QmkAsym {
+    debounce: f64,
+    cooked: bool,
+    raw: bool,
+    changed_at: f64,
+    pressed_at: f64,
+}
+
+impl Polled for QmkAsym {
+    fn reset(&mut self, closed: bool) {
+        (self.cooked, self.raw) = (closed, closed);
+        (self.changed_at, self.pressed_at) = (f64::NEG_INFINITY, f64::NEG_INFINITY);
+    }
+    fn sample(&mut self, now: f64, closed: bool) -> Option<bool> {
+        if closed != self.raw {
+            self.raw = closed;
+            self.changed_at = now;
+        }
+        if !passed(now, self.pressed_at, self.debounce) || closed == self.cooked {
+            return None;
+        }
+        if closed {
+            self.cooked = true;
+            self.pressed_at = now;
+            return Some(true);
+        }
+        passed(now, self.changed_at, self.debounce).then(|| {
+            self.cooked = false;
+            false
+        })
+    }
+}
+
+/// ZMK's integrator.
+#[derive(Debug, Clone)]
+pub struct ZmkIntegrator {
+    press: f64,
+    release: f64,
+    period: f64,
+    pressed: bool,
+    counter: f64,
+}
+
+impl Polled for ZmkIntegrator {
+    fn reset(&mut self, closed: bool) {
+        (self.pressed, self.counter) = (closed, 0.0);
+    }
+    fn sample(&mut self, _now: f64, closed: bool) -> Option<bool> {
+        if closed == self.pressed {
+            self.counter = (self.counter - self.period).max(0.0);
+            return None;
+        }
+        let threshold = if self.pressed {
+            self.release
+        } else {
+            self.press
+        };
+        // (milliseconds counted in whole scans: compare with half a scan of slack)
+        if self.counter < threshold - 0.5 * self.period {
+            self.counter += self.period;
+            return None;
+        }
+        self.pressed = !self.pressed;
+        self.counter = 0.0;
+        Some(self.pressed)
+    }
+}
+
+/// Bounce2's default mode: report once the input has been stable for the interval.
+#[derive(Debug, Clone)]
+pub struct Bounce2Stable {
+    interval: f64,
+    debounced: bool,
+    unstable: bool,
+    since: f64,
+}
+
+impl Polled for Bounce2Stable {
+    fn reset(&mut self, closed: bool) {
+        (self.debounced, self.unstable, self.since) = (closed, closed, f64::NEG_INFINITY);
+    }
+    fn sample(&mut self, now: f64, closed: bool) -> Option<bool> {
+        if closed != self.unstable {
+            self.unstable = closed;
+            self.since = now;
+            return None;
+        }
+        if passed(now, self.since, self.interval) && closed != self.debounced {
+            self.since = now;
+            self.debounced = closed;
+            return Some(closed);
+        }
+        None
+    }
+}
+
+/// debouncr's stateful debouncer of 4, 8 or 16 samples (the crate itself).
+pub enum Debouncr {
+    /// 4 samples.
+    Four(debouncr::DebouncerStateful<u8, debouncr::Repeat4>),
+    /// 8 samples.
+    Eight(debouncr::DebouncerStateful<u8, debouncr::Repeat8>),
+    /// 16 samples.
+    Sixteen(debouncr::DebouncerStateful<u16, debouncr::Repeat16>),
+}
+
+impl Polled for Debouncr {
+    fn reset(&mut self, closed: bool) {
+        *self = match self {
+            Debouncr::Four(_) => Debouncr::Four(debouncr::debounce_stateful_4(closed)),
+            Debouncr::Eight(_) => Debouncr::Eight(debouncr::debounce_stateful_8(closed)),
+            Debouncr::Sixteen(_) => Debouncr::Sixteen(debouncr::debounce_stateful_16(closed)),
+        };
+    }
+    fn sample(&mut self, _now: f64, closed: bool) -> Option<bool> {
+        let edge = match self {
+            Debouncr::Four(d) => d.update(closed),
+            Debouncr::Eight(d) => d.update(closed),
+            Debouncr::Sixteen(d) => d.update(closed),
+        };
+        edge.map(|e| e == debouncr::Edge::Rising)
+    }
+}
+
+/// Ours: [`contact_bounce::State`] with press and release windows in samples.
+#[derive(Debug, Clone)]
+pub struct Ours {
+    windows: Windows,
+    state: State,
+}
+
+impl Polled for Ours {
+    fn reset(&mut self, closed: bool) {
+        self.state = State::new(closed);
+    }
+    fn sample(&mut self, _now: f64, closed: bool) -> Option<bool> {
+        self.state
+            .update(closed, &self.windows)
+            .map(|e| e == contact_bounce::Edge::Press)
+    }
+}
+
+/// How a debouncer sees the pin.
+pub enum Kernel {
+    /// Sampled every period.
+    Polled(Box<dyn Polled>),
+    /// Every edge interrupt restarts a timer of this many seconds; when it expires the pin is
+    /// read and reported if it changed (Linux and Zephyr `gpio-keys`).
+    Interrupt(f64),
+}
+
+/// A debouncer of the benchmark.
+pub struct Row {
+    /// Its name in the outputs.
+    pub name: String,
+    /// Its window (s), for the kind replayed; `None` when it has none in seconds.
+    pub window: Option<f64>,
+    /// The debouncer.
+    pub kernel: Kernel,
+    /// The longest it may wait before reporting (s): how long to run after the last change.
+    pub settle: f64,
+}
+
+/// What one debouncer did on the replayed tests of one switch and kind.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Score {
+    /// Tests replayed.
+    pub events: usize,
+    /// Reported edges beyond the one true edge of each test.
+    pub false_edges: usize,
+    /// Tests with at least one false edge.
+    pub tests_with_false_edges: usize,
+    /// From the first change to the first reported edge, per test with a true edge (s).
+    pub latencies: Vec<f64>,
+}
+
+/// The phase of test `i`'s samples, as a fraction of the period: the golden-ratio sequence,
+/// spread evenly and the same for every debouncer.
+fn phase(i: usize) -> f64 {
+    #[allow(clippy::cast_precision_loss)]
+    let x = (i as f64 + 1.0) * 0.618_033_988_749_895;
+    x - x.floor()
+}
+
+/// Replays `traces` through `row`'s debouncer, `period` (s) apart for a polled one.
+#[must_use]
+pub fn score(row: &mut Row, traces: &[Trace], period: f64) -> Score {
+    let mut s = Score {
+        events: traces.len(),
+        false_edges: 0,
+        tests_with_false_edges: 0,
+        latencies: Vec::new(),
+    };
+    for (i, trace) in traces.iter().enumerate() {
+        let edges: Vec<f64> = match &mut row.kernel {
+            Kernel::Polled(d) => {
+                d.reset(trace.closed_before);
+                let end = trace.last() + row.settle + 4.0 * period;
+                let mut edges = Vec::new();
+                let mut k = 0u64;
+                loop {
+                    #[allow(clippy::cast_precision_loss)]
+                    let now = (phase(i) + k as f64) * period;
+                    if now > end {
+                        break;
+                    }
+                    if d.sample(now, trace.closed_at(now)).is_some() {
+                        edges.push(now);
+                    }
+                    k += 1;
+                }
+                edges
+            }
+            Kernel::Interrupt(delay) => {
+                let mut reported = trace.closed_before;
+                let mut edges = Vec::new();
+                for (j, &c) in trace.changes.iter().enumerate() {
+                    let fires = c + *delay;
+                    if trace.changes.get(j + 1).is_some_and(|&next| next <= fires) {
+                        continue; // rescheduled by the next edge
+                    }
+                    let level = trace.closed_at(fires);
+                    if level != reported {
+                        reported = level;
+                        edges.push(fires);
+                    }
+                }
+                edges
+            }
+        };
+        let moved = trace.closed_after() != trace.closed_before;
+        let extra = edges.len().saturating_sub(usize::from(moved));
+        s.false_edges += extra;
+        s.tests_with_false_edges += usize::from(extra > 0);
+        if moved {
+            if let Some(&first) = edges.first() {
+                s.latencies.push(first);
+            }
+        }
+    }
+    s
+}
+
+/// The peers, each at its documented default, at `period` (s) between samples.
+#[must_use]
+pub fn peers(period: f64) -> Vec<Row> {
+    let polled = |name: &str, window: f64, d: Box<dyn Polled>| Row {
+        name: name.to_owned(),
+        window: Some(window),
+        kernel: Kernel::Polled(d),
+        settle: window + 2.0 * period,
+    };
+    let mut rows = vec![
+        polled(
+            "qmk sym_defer_pk",
+            5e-3,
+            Box::new(QmkSymDefer {
+                debounce: 5e-3,
+                cooked: false,
+                raw: false,
+                changed_at: None,
+            }),
+        ),
+        polled(
+            "qmk sym_eager_pk",
+            5e-3,
+            Box::new(LockOut {
+                window: 5e-3,
+                cooked: false,
+                since: 0.0,
+            }),
+        ),
+        polled(
+            "qmk asym_eager_defer_pk",
+            5e-3,
+            Box::new(QmkAsym {
+                debounce: 5e-3,
+                cooked: false,
+                raw: false,
+                changed_at: 0.0,
+                pressed_at: 0.0,
+            }),
+        ),
+        polled(
+            "zmk integrator",
+            5e-3,
+            Box::new(ZmkIntegrator {
+                press: 5e-3,
+                release: 5e-3,
+                period,
+                pressed: false,
+                counter: 0.0,
+            }),
+        ),
+        polled(
+            "bounce2 stable",
+            10e-3,
+            Box::new(Bounce2Stable {
+                interval: 10e-3,
+                debounced: false,
+                unstable: false,
+                since: 0.0,
+            }),
+        ),
+        polled(
+            "bounce2 lock-out",
+            10e-3,
+            Box::new(LockOut {
+                window: 10e-3,
+                cooked: false,
+                since: 0.0,
+            }),
+        ),
+    ];
+    for (n, d) in [
+        (4.0, Debouncr::Four(debouncr::debounce_stateful_4(false))),
+        (8.0, Debouncr::Eight(debouncr::debounce_stateful_8(false))),
+        (
+            16.0,
+            Debouncr::Sixteen(debouncr::debounce_stateful_16(false)),
+        ),
+    ] {
+        rows.push(polled(
+            &format!("debouncr {n:.0} samples"),
+            n * period,
+            Box::new(d),
+        ));
+    }
+    for (name, delay) in [("linux gpio-keys", 5e-3), ("zephyr gpio-keys", 30e-3)] {
+        rows.push(Row {
+            name: name.to_owned(),
+            window: Some(delay),
+            kernel: Kernel::Interrupt(delay),
+            settle: delay,
+        });
+    }
+    rows
+}
+
+/// Our debouncer in both modes with `press` and `release` windows (s) at `period`; `None` when
+/// a window does not fit [`Windows::MAX_TICKS`] samples.
+#[must_use]
+pub fn ours(label: &str, press: f64, release: f64, period: f64, kind: Kind) -> Option<Vec<Row>> {
+    let ticks = |w: f64| -> Option<u16> {
+        let t = (w / period).ceil().max(1.0);
+        #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+        (t <= f64::from(Windows::MAX_TICKS)).then_some(t as u16)
+    };
+    let (p, r) = (ticks(press)?, ticks(release)?);
+    let shown = if kind == Kind::Press { press } else { release };
+    Some(
+        [("hold-off", Mode::HoldOff), ("confirm", Mode::Confirm)]
+            .into_iter()
+            .filter_map(|(mode_name, mode)| {
+                let windows = Windows::new(p, r, mode).ok()?;
+                Some(Row {
+                    name: format!("{label} {mode_name}"),
+                    window: Some(shown),
+                    kernel: Kernel::Polled(Box::new(Ours {
+                        windows,
+                        state: State::new(false),
+                    })),
+                    settle: press.max(release) + 2.0 * period,
+                })
+            })
+            .collect(),
+    )
+}
+
+/// What `replay` was asked for, beyond the capture.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Settings {
+    /// Seconds between samples of the polled debouncers.
+    pub period: f64,
+    /// The earlier share of each switch and kind's tests that calibrates.
+    pub split: f64,
+    /// Every time multiplied by this (a contactor-like 10, a reed-like 0.1).
+    pub time_scale: f64,
+    /// The switch type for the prior, where the switch's name gives none.
+    pub switch_type: Option<&'static Prior>,
+}
+
+/// One line of the benchmark.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Line {
+    /// The switch.
+    pub switch: String,
+    /// Press or release.
+    pub kind: Kind,
+    /// The debouncer.
+    pub debouncer: String,
+    /// Its window for this kind (s).
+    pub window: Option<f64>,
+    /// Its score on the later tests.
+    pub score: Score,
+}
+
+impl Line {
+    /// The latency quantile `q` (s).
+    #[must_use]
+    pub fn latency(&self, q: f64) -> Option<f64> {
+        let mut v = self.score.latencies.clone();
+        v.sort_by(f64::total_cmp);
+        nearest_rank(&v, q)
+    }
+}
+
+/// The benchmark on `events` (already read, with what cannot be one press left out), per switch
+/// and kind in their order; `calibrate` describes the earlier tests at `resolution` with
+/// `burst_gap` and sets the windows at `percentile`.
+///
+/// # Errors
+/// A calibrated or prior window longer than our debouncer's counter holds at `period`.
+pub fn run(events: &[Event], c: &calibrate::Options, s: &Settings) -> Result<Vec<Line>, String> {
+    let mut by: BTreeMap<(&str, Kind), Vec<&Event>> = BTreeMap::new();
+    for e in events {
+        by.entry((e.switch.as_str(), e.kind)).or_default().push(e);
+    }
+    let cut = |n: usize| {
+        #[allow(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            clippy::cast_precision_loss
+        )]
+        let k = (n as f64 * s.split).floor() as usize;
+        k.min(n)
+    };
+    // Calibrated windows per switch and kind, from the earlier tests.
+    let mut calibrated: BTreeMap<(&str, Kind), f64> = BTreeMap::new();
+    for (&(switch, kind), list) in &by {
+        let earlier: Vec<_> = list[..cut(list.len())]
+            .iter()
+            .map(|e| {
+                let scaled = Event {
+                    changes: e.changes.iter().map(|t| t * s.time_scale).collect(),
+                    ..(*e).clone()
+                };
+                scaled.describe(c.resolution * s.time_scale, c.burst_gap * s.time_scale)
+            })
+            .collect();
+        let refs: Vec<_> = earlier.iter().collect();
+        calibrated.insert((switch, kind), window(&refs, c.percentile).recommended());
+    }
+    let mut lines = Vec::new();
+    for (&(switch, kind), list) in &by {
+        let later: Vec<Trace> = list[cut(list.len())..]
+            .iter()
+            .map(|e| Trace::of(e, s.time_scale))
+            .collect();
+        let both = |k| calibrated.get(&(switch, k)).copied().unwrap_or(0.0);
+        let mut rows = ours(
+            "calibrated",
+            both(Kind::Press),
+            both(Kind::Release),
+            s.period,
+            kind,
+        )
+        .ok_or_else(|| {
+            format!("{switch}: a calibrated window does not fit {} samples of --period {}: sample less often", Windows::MAX_TICKS, s.period)
+        })?;
+        if let Some(prior) = priors::from_switch_name(switch).or(s.switch_type) {
+            let w = prior.window() * s.time_scale;
+            rows.extend(ours("physics-prior", w, w, s.period, kind).ok_or_else(|| {
+                format!("{switch}: the prior's window does not fit {} samples of --period {}: sample less often", Windows::MAX_TICKS, s.period)
+            })?);
+        }
+        rows.extend(peers(s.period));
+        for mut row in rows {
+            let score = score(&mut row, &later, s.period);
+            lines.push(Line {
+                switch: switch.to_owned(),
+                kind,
+                debouncer: row.name,
+                window: row.window,
+                score,
+            });
+        }
+    }
+    Ok(lines)
+}
+
+fn json_number(x: Option<f64>) -> String {
+    x.map_or_else(|| "null".to_owned(), |v| format!("{v:e}"))
+}
+
+/// One JSON object per line, with exactly the keys `switch`, `kind`, `debouncer`, `window_s`,
+/// `events`, `false_edges`, `latency_p50_s`, `latency_p99_s`.
+#[must_use]
+pub fn json(lines: &[Line]) -> String {
+    lines
+        .iter()
+        .map(|l| {
+            format!(
+                "{{\"switch\":{},\"kind\":\"{}\",\"debouncer\":{},\"window_s\":{},\"events\":{},\"false_edges\":{},\"latency_p50_s\":{},\"latency_p99_s\":{}}}\n",
+                serde_json::Value::from(l.switch.as_str()),
+                l.kind.name(),
+                serde_json::Value::from(l.debouncer.as_str()),
+                json_number(l.window),
+                l.score.events,
+                l.score.false_edges,
+                json_number(l.latency(0.5)),
+                json_number(l.latency(0.99)),
+            )
+        })
+        .collect()
+}
+
+/// The rows as a markdown table (the table format is the same).
+#[must_use]
+pub fn markdown(lines: &[Line]) -> String {
+    let mut out = String::from(
+        "| switch | kind | debouncer | window | events | false edges | tests with false edges | latency P50 | latency P99 |\n|---|---|---|---:|---:|---:|---:|---:|---:|\n",
+    );
+    let show = |x: Option<f64>| x.map_or_else(|| "-".to_owned(), time);
+    for l in lines {
+        out.push_str(&format!(
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
+            l.switch,
+            l.kind.name(),
+            l.debouncer,
+            show(l.window),
+            l.score.events,
+            l.score.false_edges,
+            l.score.tests_with_false_edges,
+            show(l.latency(0.5)),
+            show(l.latency(0.99)),
+        ));
+    }
+    out
+}
+
+/// The Pareto front of one switch and kind as an SVG: false edges against latency P99 (log10
+/// s), ours and the peers apart, the rows on the front named in the title.
+#[must_use]
+pub fn plot(lines: &[&Line]) -> String {
+    let point = |l: &&Line| {
+        l.latency(0.99).map(|t| {
+            #[allow(clippy::cast_precision_loss)]
+            let f = l.score.false_edges as f64;
+            (t.max(1e-9).log10(), f)
+        })
+    };
+    let ours: Vec<(f64, f64)> = lines
+        .iter()
+        .filter(|l| l.debouncer.starts_with("calibrated") || l.debouncer.starts_with("physics"))
+        .filter_map(point)
+        .collect();
+    let theirs: Vec<(f64, f64)> = lines
+        .iter()
+        .filter(|l| !(l.debouncer.starts_with("calibrated") || l.debouncer.starts_with("physics")))
+        .filter_map(point)
+        .collect();
+    // The front: no other row has both fewer false edges and a lower latency.
+    let mut all: Vec<(&&Line, (f64, f64))> = lines
+        .iter()
+        .filter_map(|l| point(l).map(|p| (l, p)))
+        .collect();
+    all.sort_by(|a, b| a.1 .0.total_cmp(&b.1 .0).then(a.1 .1.total_cmp(&b.1 .1)));
+    let mut front: Vec<(f64, f64)> = Vec::new();
+    let mut names = Vec::new();
+    for (l, p) in &all {
+        if front.last().is_none_or(|last| p.1 < last.1) {
+            front.push(*p);
+            names.push(l.debouncer.clone());
+        }
+    }
+    let (switch, kind) = lines
+        .first()
+        .map_or(("", "press"), |l| (l.switch.as_str(), l.kind.name()));
+    crate::plot::svg(
+        &format!("{switch} {kind}: front {}", names.join(", ")),
+        "log10 latency P99 (s)",
+        "false edges",
+        &[
+            crate::plot::Series {
+                label: "ours",
+                colour: "#2ca02c",
+                points: ours,
+                dots: true,
+            },
+            crate::plot::Series {
+                label: "peers",
+                colour: "#1f77b4",
+                points: theirs,
+                dots: true,
+            },
+            crate::plot::Series {
+                label: "Pareto front",
+                colour: "#d62728",
+                points: front,
+                dots: false,
+            },
+        ],
+    )
+}
+
+/// How `replay` prints its rows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Output {
+    /// A markdown table (also `table`).
+    Markdown,
+    /// One JSON object per row.
+    Json,
+}
+
+/// What `replay` was asked for.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Request {
+    /// The capture and how to read and calibrate it (`calibrate`'s options).
+    pub capture: calibrate::Options,
+    /// The replay's own settings.
+    pub settings: Settings,
+    /// How to print.
+    pub output: Output,
+    /// Write one Pareto SVG per switch and kind there.
+    pub plot: Option<String>,
+}
+
+/// Parses the arguments after `replay`: its own options, and `calibrate`'s for the capture
+/// (`--capture-format` for its `--format`).
+///
+/// # Errors
+/// An unknown option, a missing or bad value (named), no capture file.
+pub fn options(args: &[String]) -> Result<Request, String> {
+    let mut settings = Settings {
+        period: 1e-3,
+        split: 0.5,
+        time_scale: 1.0,
+        switch_type: None,
+    };
+    let mut output = Output::Markdown;
+    let mut plot = None;
+    let mut rest = Vec::new();
+    let mut it = args.iter();
+    let number = |name: &str, v: Option<&String>| -> Result<f64, String> {
+        let v = v.ok_or(format!("{name} needs a value"))?;
+        v.parse::<f64>()
+            .ok()
+            .filter(|x| x.is_finite() && *x > 0.0)
+            .ok_or(format!("{name}: '{v}' is not a positive number"))
+    };
+    while let Some(arg) = it.next() {
+        match arg.as_str() {
+            "--period" => settings.period = number("--period", it.next())?,
+            "--time-scale" => settings.time_scale = number("--time-scale", it.next())?,
+            "--split" => {
+                let f = number("--split", it.next())?;
+                if f >= 1.0 {
+                    return Err(format!(
+                        "--split: {f} leaves no later test to replay: give a share below 1"
+                    ));
+                }
+                settings.split = f;
+            }
+            "--switch-type" => {
+                let v = it.next().ok_or("--switch-type needs a value")?;
+                settings.switch_type = Some(priors::by_name(v).ok_or_else(|| {
+                    let names: Vec<&str> = priors::TYPES.iter().map(|(n, _)| *n).collect();
+                    format!("--switch-type: '{v}' is not one of {}", names.join(", "))
+                })?);
+            }
+            "--format" => {
+                let v = it.next().ok_or("--format needs a value")?;
+                output = match v.as_str() {
+                    "table" | "markdown" => Output::Markdown,
+                    "json" => Output::Json,
+                    other => {
+                        return Err(format!(
+                            "--format: '{other}' is not table, markdown or json"
+                        ))
+                    }
+                };
+            }
+            "--plot" => plot = Some(it.next().ok_or("--plot needs a value")?.clone()),
+            "--capture-format" => {
+                rest.push("--format".to_owned());
+                rest.push(it.next().ok_or("--capture-format needs a value")?.clone());
+            }
+            "--export" | "--events" => return Err(format!("{arg} is calibrate's, not replay's")),
+            other => rest.push(other.to_owned()),
+        }
+    }
+    let capture = calibrate::options(&rest)?;
+    Ok(Request {
+        capture,
+        settings,
+        output,
+        plot,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn trace(closed_before: bool, changes: &[f64]) -> Trace {
+        Trace {
+            closed_before,
+            changes: changes.to_vec(),
+        }
+    }
+
+    #[test]
+    fn a_trace_knows_the_contact_at_any_time() {
+        let t = trace(false, &[0.0, 1e-3, 2e-3]);
+        assert!(!t.closed_at(-1e-9));
+        assert!(t.closed_at(0.0) && t.closed_at(0.5e-3));
+        assert!(!t.closed_at(1.5e-3));
+        assert!(t.closed_at(3e-3) && t.closed_after());
+    }
+
+    #[test]
+    fn interrupt_debouncers_report_after_the_quiet_delay() {
+        // Bounces 0-2 ms, then a re-opening at 10-12 ms: a 5 ms gpio-keys reports the press at
+        // 7 ms, a release at 15... no: the open interval 10-12 ms is 2 ms, shorter than 5 ms,
+        // so the timer is rescheduled and fires at 17 ms, closed: one edge. A 1 ms delay sees
+        // it: press at 3 ms, release at 11 ms, press at 13 ms.
+        let t = trace(false, &[0.0, 1e-3, 2e-3, 10e-3, 12e-3]);
+        let mut row = Row {
+            name: "x".into(),
+            window: None,
+            kernel: Kernel::Interrupt(5e-3),
+            settle: 5e-3,
+        };
+        let s = score(&mut row, std::slice::from_ref(&t), 1e-3);
+        assert_eq!((s.false_edges, s.latencies.len()), (0, 1));
+        assert!((s.latencies[0] - 7e-3).abs() < 1e-12);
+        row.kernel = Kernel::Interrupt(1e-3);
+        let s = score(&mut row, &[t], 1e-3);
+        assert_eq!(s.false_edges, 2);
+        assert!((s.latencies[0] - 3e-3).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_hold_off_that_covers_the_bounce_has_no_false_edge_and_one_sample_of_latency() {
+        // A press bouncing for 3.5 ms, sampled every 0.1 ms.
+        let changes: Vec<f64> = (0..8).map(|i| f64::from(i) * 0.5e-3).collect();
+        let t = trace(false, &changes[..7]);
+        for (window, covers) in [(4e-3, true), (1e-3, false)] {
+            let mut rows = ours("x", window, window, 1e-4, Kind::Press).unwrap();
+            let s = score(&mut rows[0], std::slice::from_ref(&t), 1e-4);
+            assert_eq!(s.false_edges == 0, covers, "window {window}");
+            assert!(s.latencies[0] <= 1e-4 + 1e-12);
+            // Confirm mode waits a window after the last change.
+            let s = score(&mut rows[1], std::slice::from_ref(&t), 1e-4);
+            assert_eq!(s.false_edges, 0);
+            assert!(s.latencies[0] >= 3e-3 + window - 1e-4 - 1e-12);
+        }
+    }
+
+    #[test]
+    fn the_peers_behave_as_documented_on_a_long_reopening() {
+        // A press closed 0-6 ms, open 6-12 ms, closed from 12 ms, sampled every 1 ms: what
+        // reports a state held 5 ms (or at once, ignoring the pin for under 6 ms) reports a
+        // false release and press; what needs 8 ms or more of stable input does not; Bounce2's
+        // lock-out ignores the pin for 10 ms, reads the reopening at 10.6 ms, and does.
+        let t = trace(false, &[0.0, 6e-3, 12e-3]);
+        let want = [
+            ("qmk sym_defer_pk", 2),
+            ("qmk sym_eager_pk", 2),
+            ("qmk asym_eager_defer_pk", 2),
+            ("zmk integrator", 2),
+            ("bounce2 stable", 0),
+            ("bounce2 lock-out", 2),
+            ("debouncr 4 samples", 2),
+            ("debouncr 8 samples", 0),
+            ("debouncr 16 samples", 0),
+            ("linux gpio-keys", 2),
+            ("zephyr gpio-keys", 0),
+        ];
+        let rows = peers(1e-3);
+        assert_eq!(rows.len(), want.len());
+        for (mut row, (name, false_edges)) in rows.into_iter().zip(want) {
+            assert_eq!(row.name, name);
+            let s = score(&mut row, std::slice::from_ref(&t), 1e-3);
+            assert_eq!(s.false_edges, false_edges, "{name}");
+            assert_eq!(s.latencies.len(), 1, "{name}");
+        }
+    }
+}
