@@ -1,0 +1,190 @@
+//! `bounce-table replay` on synthetic captures whose answers are known.
+
+use std::process::Command;
+
+const BIN: &str = env!("CARGO_BIN_EXE_bounce-table");
+
+/// A JSON Lines capture of `tests` press/release pairs of one switch: each press closes at 0,
+/// reopens at `reopen` (s) and closes for good at `close` (s); each release is clean.
+fn capture(name: &str, tests: usize, reopen: f64, close: f64) -> String {
+    let mut out = String::new();
+    for i in 0..tests {
+        let ns = |t: f64| t * 1e9;
+        out.push_str(&format!(
+            "{{\"dataset\":\"{name}\",\"test\":{},\"kind\":\"press\",\"section\":\"Normal\",\"section_invalid\":false,\"events\":[[0,1],[100,0],[{},1],[{},0]]}}\n",
+            2 * i + 1,
+            100.0 + ns(reopen),
+            100.0 + ns(close),
+        ));
+        out.push_str(&format!(
+            "{{\"dataset\":\"{name}\",\"test\":{},\"kind\":\"release\",\"section\":\"Normal\",\"section_invalid\":false,\"events\":[[0,0],[100,1]]}}\n",
+            2 * i + 2
+        ));
+    }
+    out
+}
+
+fn write(name: &str, text: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("replay-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+fn rows(args: &[&str]) -> Vec<serde_json::Value> {
+    let out = Command::new(BIN).arg("replay").args(args).output().unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout)
+        .unwrap()
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect()
+}
+
+fn row<'a>(rows: &'a [serde_json::Value], kind: &str, debouncer: &str) -> &'a serde_json::Value {
+    rows.iter()
+        .find(|r| r["kind"] == kind && r["debouncer"] == debouncer)
+        .unwrap_or_else(|| panic!("no {kind} row for {debouncer}"))
+}
+
+#[test]
+fn a_reopening_switch_gets_the_answers_the_peers_documentation_gives() {
+    // Every press: closed 0-6 ms, open 6-12 ms, closed. 20 tests: 10 calibrate, 10 replayed.
+    let path = write(
+        "reopen-rocker.jsonl",
+        &capture("reopen-rocker", 20, 6e-3, 12e-3),
+    );
+    let r = rows(&["--format", "json", path.to_str().unwrap()]);
+    let keys = [
+        "switch",
+        "kind",
+        "debouncer",
+        "window_s",
+        "events",
+        "false_edges",
+        "latency_p50_s",
+        "latency_p99_s",
+    ];
+    for x in &r {
+        let o = x.as_object().unwrap();
+        assert_eq!(
+            o.keys().collect::<Vec<_>>(),
+            keys.iter().collect::<Vec<_>>()
+        );
+        assert_eq!(x["events"], 10);
+    }
+    // 2 kinds x (2 calibrated + 2 prior (the name says rocker) + 11 peers).
+    assert_eq!(r.len(), 2 * 15);
+    // The calibrated window covers the 12 ms bounce: no false edge in either mode; hold-off
+    // reports at the first sample (1 ms), confirm a window after the last change.
+    for mode in ["calibrated hold-off", "calibrated confirm"] {
+        let x = row(&r, "press", mode);
+        assert_eq!(x["false_edges"], 0, "{x}");
+        assert!(x["window_s"].as_f64().unwrap() >= 12e-3, "{x}");
+    }
+    assert!(
+        row(&r, "press", "calibrated hold-off")["latency_p99_s"]
+            .as_f64()
+            .unwrap()
+            <= 1e-3
+    );
+    let confirm = row(&r, "press", "calibrated confirm");
+    assert!(
+        confirm["latency_p50_s"].as_f64().unwrap()
+            >= 12e-3 + confirm["window_s"].as_f64().unwrap() - 1e-3
+    );
+    // Each peer as its documentation says (see the unit test of the same trace): a false
+    // release and press per test where a state held 5 ms is reported.
+    for (peer, per_test) in [
+        ("qmk sym_defer_pk", 2),
+        ("qmk sym_eager_pk", 2),
+        ("zmk integrator", 2),
+        ("bounce2 stable", 0),
+        ("bounce2 lock-out", 2),
+        ("debouncr 16 samples", 0),
+        ("linux gpio-keys", 2),
+        ("zephyr gpio-keys", 0),
+    ] {
+        assert_eq!(
+            row(&r, "press", peer)["false_edges"],
+            10 * per_test,
+            "{peer}"
+        );
+    }
+    // Clean releases: nobody has a false edge; a rocker's prior holds.
+    assert!(r
+        .iter()
+        .filter(|x| x["kind"] == "release")
+        .all(|x| x["false_edges"] == 0));
+    assert_eq!(row(&r, "press", "physics-prior hold-off")["false_edges"], 0);
+}
+
+#[test]
+fn time_scaled_captures_keep_the_calibrated_rows_clean() {
+    let path = write("scaled.jsonl", &capture("scaled", 20, 6e-3, 12e-3));
+    for (scale, period) in [("10", "1e-3"), ("0.1", "1e-5")] {
+        let r = rows(&[
+            "--format",
+            "json",
+            "--time-scale",
+            scale,
+            "--period",
+            period,
+            "--switch-type",
+            "push-button",
+            path.to_str().unwrap(),
+        ]);
+        for mode in ["calibrated hold-off", "calibrated confirm"] {
+            assert_eq!(row(&r, "press", mode)["false_edges"], 0, "x{scale} {mode}");
+        }
+        let w = row(&r, "press", "calibrated hold-off")["window_s"]
+            .as_f64()
+            .unwrap();
+        let bounce = 12e-3 * scale.parse::<f64>().unwrap();
+        assert!(w >= bounce && w <= 2.0 * bounce, "x{scale}: {w}");
+        // The prior scales with the capture too (a type's window, in the capture's time).
+        assert!(row(&r, "press", "physics-prior confirm")["window_s"].is_number());
+    }
+}
+
+#[test]
+fn bad_captures_and_options_are_named() {
+    let path = write(
+        "bad.jsonl",
+        "{\"dataset\":\"d\",\"kind\":\"press\",\"events\":[[0,1],[5,0]]}\nnot json\n",
+    );
+    let out = Command::new(BIN)
+        .args(["replay", path.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("bad.jsonl:2: not JSON"), "{err}");
+    for (args, named) in [
+        (&["--split", "1", "x.jsonl"][..], "--split"),
+        (&["--period", "0", "x.jsonl"], "--period"),
+        (&["--switch-type", "valve", "x.jsonl"], "--switch-type"),
+        (&["--format", "yaml", "x.jsonl"], "--format"),
+        (&["--export", "c", "x.jsonl"], "--export"),
+    ] {
+        let out = Command::new(BIN).arg("replay").args(args).output().unwrap();
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert!(
+            String::from_utf8_lossy(&out.stderr).contains(named),
+            "{args:?}"
+        );
+    }
+    // A window that does not fit the debouncer's counter at the period asked: a clear error.
+    let path = write("long.jsonl", &capture("long", 20, 6e-3, 12e-3));
+    let out = Command::new(BIN)
+        .args(["replay", "--period", "1e-7", path.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("sample less often"));
+}
