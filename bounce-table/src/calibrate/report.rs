@@ -240,6 +240,10 @@ pub fn summary(groups: &Groups<'_>, percentile: f64, burst_gap: f64) -> String {
         let refs: Vec<&capture::Description> = d.iter().collect();
         let w = window(&refs, percentile);
         let (covered, later, half) = chronological_cover(&refs, percentile, 0.5);
+        let later_max = refs[refs.len() / 2..]
+            .iter()
+            .map(|x| x.bounce)
+            .fold(0.0, f64::max);
         let late: Vec<f64> = d
             .iter()
             .filter(|x| x.bursts > 1)
@@ -262,7 +266,7 @@ pub fn summary(groups: &Groups<'_>, percentile: f64, burst_gap: f64) -> String {
             )
         };
         out.push_str(&format!(
-            "- {switch} {}: use {} ({what}, {} events); the same rule fitted on the earlier half ({}) covers {covered} of the {later} later {}; {late_text}.{}\n",
+            "- {switch} {}: use {} ({what}, {} events); the same rule fitted on the earlier half ({}) covers {covered} of the {later} later {} and is {:.2} times the largest of them, {}; {late_text}.{}\n",
             kind.name(),
             time(w.recommended()),
             d.len(),
@@ -271,6 +275,12 @@ pub fn summary(groups: &Groups<'_>, percentile: f64, burst_gap: f64) -> String {
                 capture::Kind::Press => "presses",
                 capture::Kind::Release => "releases",
             },
+            if later_max > 0.0 {
+                half.recommended() / later_max
+            } else {
+                f64::INFINITY
+            },
+            time(later_max),
             w.reason().map_or_else(String::new, |r| format!(" Far beyond the capture: {r}.")),
         ));
     }
