@@ -105,9 +105,22 @@ for path in ("README.md", "docs/eval-catalogue.md"):
         sys.exit(f"{path}: the eval table differs from scripts/eval-catalogue.sh's output")
 PY
 
-step "docs/calibration.md is current (needs the shared capture, ../shared/data)"
+step "docs/calibration.md, docs/replay.md and the README's replay table are current (need the shared capture, ../shared/data)"
 if [ -f ../shared/data/bouncy-button-uno.jsonl ]; then
   scripts/calibration-report.sh | diff - docs/calibration.md
+  replay=$(scripts/replay-report.sh)
+  diff <(printf '%s\n' "$replay") docs/replay.md
+  python3 - "$replay" <<'PY'
+import sys
+doc = sys.argv[1]
+rows = [l for l in doc.splitlines() if l.startswith("| bbb") and l.endswith(("| yes |", "| NO |"))]
+readme = open("README.md").read()
+missing = [r for r in rows if r not in readme]
+if missing or not rows:
+    sys.exit("README.md: the replay table differs from scripts/replay-report.sh:\n" + "\n".join(missing))
+if any(r.endswith("| NO |") for r in rows):
+    sys.exit("replay: a calibrated row has false edges or is slower than a clean peer:\n" + "\n".join(rows))
+PY
 else
   echo "SKIPPED: no ../shared/data/bouncy-button-uno.jsonl on this machine (not part of the repository)"
 fi

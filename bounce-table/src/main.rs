@@ -274,7 +274,7 @@ fn main() -> ExitCode {
                     }
                 }
                 println!(
-                    "# Windows\n\n{}",
+                    "# Summary\n\n{}",
                     calibrate::summary(&groups, options.percentile, options.burst_gap)
                 );
                 print!(
