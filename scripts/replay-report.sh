@@ -7,10 +7,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 capture=${CAPTURE:-../shared/data/bouncy-button-uno.jsonl}
 [ -f "$capture" ] || { echo "no capture at $capture (set CAPTURE=...)" >&2; exit 1; }
-cargo build --quiet --release -p bounce-table
-bin=target/release/bounce-table
+bin() { cargo run --quiet --release -p bounce-table -- "$@"; }
 # The push button's name gives no type: say it (the capture's notes call it a push button).
-run() { "$bin" replay --switch-type push-button "$@" "$capture"; }
+run() { bin replay --switch-type push-button "$@" "$capture"; }
 table=$(run)
 checks=$(run --format json | python3 -c '
 import json, sys
@@ -34,7 +33,7 @@ for (sw, kind), g in groups.items():
 print()
 print("Every switch and kind: " + ("the calibrated rows have no false edge, and the faster is at least as fast as every peer without one." if ok else "NOT every calibrated row holds (see the last column)."))
 ')
-summary=$("$bin" calibrate "$capture" | sed -n '/^# Summary/,/^## Description/p' | sed '1d;$d')
+summary=$(bin calibrate "$capture" | sed -n '/^# Summary/,/^## Description/p' | sed '1d;$d')
 doc=$(cat <<MD
 # Replay: debouncers on a real capture
 
