@@ -88,20 +88,7 @@ impl Prior {
     /// The `q` quantile of the bounce (s): the window at that percentile. Bisection in ln t.
     #[must_use]
     pub fn quantile(&self, q: f64) -> f64 {
-        let q = q.clamp(0.0, 1.0 - 1e-12);
-        let (mut lo, mut hi) = (-60.0_f64, 60.0_f64);
-        for _ in 0..200 {
-            if hi - lo <= 1e-9 {
-                break;
-            }
-            let mid = 0.5 * (lo + hi);
-            if self.cdf(mid.exp()) >= q {
-                hi = mid;
-            } else {
-                lo = mid;
-            }
-        }
-        hi.exp()
+        crate::calibrate::inverse(|t| self.cdf(t), q.clamp(0.0, 1.0 - 1e-12))
     }
 
     /// The window a prior gives: its P99.9.

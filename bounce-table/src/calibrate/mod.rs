@@ -21,7 +21,7 @@ pub use heldout::{
 };
 pub use options::{load, options, Format, Options};
 pub use plot::plot;
-pub use predictive::{Part, Predictive};
+pub use predictive::{inverse, Part, Predictive};
 pub use report::{assess, describe, summary};
 pub use window::{chronological_cover, window, Window, FAR_BEYOND};
 
