@@ -545,14 +545,18 @@ pub fn read_jsonl(
     text: &str,
     skip: &[String],
 ) -> Result<(Vec<Event>, Skipped), CaptureError> {
-    // First pass: the sections marked invalid anywhere in the file.
-    let mut invalid: Vec<String> = Vec::new();
+    // Every line parsed once; then the sections marked invalid anywhere in the file.
+    let mut lines = Vec::new();
     for (i, raw) in text.lines().enumerate() {
         if raw.trim().is_empty() {
             continue;
         }
         let v: Value =
             serde_json::from_str(raw).map_err(|e| error(file, i + 1, format!("not JSON: {e}")))?;
+        lines.push((i + 1, v));
+    }
+    let mut invalid: Vec<String> = Vec::new();
+    for (_, v) in &lines {
         if v.get("section_invalid").and_then(Value::as_bool) == Some(true) {
             if let Some(name) = v.get("section").and_then(Value::as_str) {
                 if !invalid.iter().any(|s| s == name) {
@@ -566,13 +570,7 @@ pub fn read_jsonl(
         sections: invalid.clone(),
         ..Skipped::default()
     };
-    for (i, raw) in text.lines().enumerate() {
-        let line = i + 1;
-        if raw.trim().is_empty() {
-            continue;
-        }
-        let v: Value =
-            serde_json::from_str(raw).map_err(|e| error(file, line, format!("not JSON: {e}")))?;
+    for (line, v) in lines {
         let section = v.get("section").and_then(Value::as_str);
         if v.get("section_invalid").and_then(Value::as_bool) == Some(true) {
             skipped.marked_invalid += 1;
@@ -827,6 +825,49 @@ mod tests {
         }
         let e = read_vcd("f.vcd", head, Some("other"), Polarity::ActiveLow).unwrap_err();
         assert!(e.reason.contains("no signal named"), "{e}");
+    }
+
+    #[test]
+    fn what_cannot_be_one_press_is_left_out_and_counted_per_reason() {
+        let test = |dataset: &str, section: &str, invalid: bool, events: &str| {
+            format!(
+                "{{\"dataset\":\"{dataset}\",\"kind\":\"press\",\"section\":\"{section}\",\"section_invalid\":{invalid},\"events\":{events}}}\n"
+            )
+        };
+        let one = "[[0,1],[10,0]]";
+        let text = [
+            test("a", "Slow", true, one),
+            test("b", "Slow", false, one), // the same protocol, not flagged
+            test("b", "Normal", false, one),
+            test("b", "Odd", false, one),
+            // closed, then open for 0.5 s, then closed again: two presses
+            test("b", "Normal", false, "[[0,1],[10,0],[1e6,1],[5.01e8,0]]"),
+        ]
+        .concat();
+        let (events, mut skipped) = read_jsonl("f.jsonl", &text, &["Odd".to_owned()]).unwrap();
+        assert_eq!(events.len(), 2);
+        let events = drop_several_presses(events, 0.2, &mut skipped);
+        assert_eq!(events.len(), 1);
+        assert_eq!(
+            (
+                skipped.marked_invalid,
+                skipped.marked_invalid_elsewhere,
+                skipped.named,
+                skipped.several_presses,
+                skipped.total()
+            ),
+            (1, 1, 1, 1, 4)
+        );
+        let said = skipped.describe(0.2);
+        for reason in [
+            "(Slow)",
+            "for another switch",
+            "--skip-section",
+            "several presses",
+        ] {
+            assert!(said.contains(reason), "{said}");
+        }
+        assert_eq!(Skipped::default().describe(0.2), "");
     }
 
     #[test]

@@ -5,7 +5,7 @@ use super::fit::{BounceModel, ImpactFit, LogNormal};
 use super::heldout::{
     random_splits, ratio, validations, RatioSpread, RANDOM_SPLITS, VALIDATION_QUANTILES,
 };
-use super::window::{chronological_cover, window, FAR_BEYOND};
+use super::window::{chronological_cover, window, Cover, FAR_BEYOND};
 use super::{sorted, Groups};
 use crate::capture;
 use crate::output::time;
@@ -239,11 +239,12 @@ pub fn summary(groups: &Groups<'_>, percentile: f64, burst_gap: f64) -> String {
     for ((switch, kind), d) in groups {
         let refs: Vec<&capture::Description> = d.iter().collect();
         let w = window(&refs, percentile);
-        let (covered, later, half) = chronological_cover(&refs, percentile, 0.5);
-        let later_max = refs[refs.len() / 2..]
-            .iter()
-            .map(|x| x.bounce)
-            .fold(0.0, f64::max);
+        let Cover {
+            window: half,
+            covered,
+            later,
+            later_max,
+        } = chronological_cover(&refs, percentile, 0.5);
         let late: Vec<f64> = d
             .iter()
             .filter(|x| x.bursts > 1)

@@ -59,14 +59,23 @@ pub fn window(d: &[&capture::Description], percentile: f64) -> Window {
     }
 }
 
-/// The chronological held-out check of a window: fitted on the earlier `fraction` of `d` (in
-/// capture order), how many of the later events it covers, and of how many; and the window.
+/// The chronological held-out check of a window, fitted on the earlier `fraction` of a switch
+/// and kind's events (in capture order) and judged on the later ones.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Cover {
+    /// The window fitted on the earlier events.
+    pub window: Window,
+    /// Later events whose bounce it covers.
+    pub covered: usize,
+    /// Later events.
+    pub later: usize,
+    /// The largest later bounce (s).
+    pub later_max: f64,
+}
+
+/// The chronological held-out check of [`window`] on `d` (see [`Cover`]).
 #[must_use]
-pub fn chronological_cover(
-    d: &[&capture::Description],
-    percentile: f64,
-    fraction: f64,
-) -> (usize, usize, Window) {
+pub fn chronological_cover(d: &[&capture::Description], percentile: f64, fraction: f64) -> Cover {
     #[allow(
         clippy::cast_possible_truncation,
         clippy::cast_sign_loss,
@@ -75,6 +84,10 @@ pub fn chronological_cover(
     let cut = ((d.len() as f64 * fraction).floor() as usize).min(d.len());
     let (earlier, later) = d.split_at(cut);
     let w = window(earlier, percentile);
-    let covered = later.iter().filter(|x| x.bounce <= w.recommended()).count();
-    (covered, later.len(), w)
+    Cover {
+        window: w,
+        covered: later.iter().filter(|x| x.bounce <= w.recommended()).count(),
+        later: later.len(),
+        later_max: later.iter().map(|x| x.bounce).fold(0.0, f64::max),
+    }
 }
