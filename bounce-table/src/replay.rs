@@ -491,10 +491,16 @@ pub fn peers(period: f64) -> Vec<Row> {
 /// a window does not fit [`Windows::MAX_TICKS`] samples.
 #[must_use]
 pub fn ours(label: &str, press: f64, release: f64, period: f64, kind: Kind) -> Option<Vec<Row>> {
+    // The core's rounding (up); a window of 0 (every test clean) is one sample.
     let ticks = |w: f64| -> Option<u16> {
-        let t = (w / period).ceil().max(1.0);
-        #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
-        (t <= f64::from(Windows::MAX_TICKS)).then_some(t as u16)
+        let t = if w > 0.0 {
+            contact_bounce::window_ticks(w, 1.0, period).ok()?
+        } else {
+            1
+        };
+        u16::try_from(t.max(1))
+            .ok()
+            .filter(|t| *t <= Windows::MAX_TICKS)
     };
     let (p, r) = (ticks(press)?, ticks(release)?);
     let shown = if kind == Kind::Press { press } else { release };
