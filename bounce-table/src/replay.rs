@@ -572,15 +572,7 @@ pub fn run(events: &[Event], c: &calibrate::Options, s: &Settings) -> Result<Vec
     for e in events {
         by.entry((e.switch.as_str(), e.kind)).or_default().push(e);
     }
-    let cut = |n: usize| {
-        #[allow(
-            clippy::cast_possible_truncation,
-            clippy::cast_sign_loss,
-            clippy::cast_precision_loss
-        )]
-        let k = (n as f64 * s.split).floor() as usize;
-        k.min(n)
-    };
+    let cut = |n: usize| calibrate::earlier_count(n, s.split);
     // Calibrated windows per switch and kind, from the earlier tests.
     let mut calibrated: BTreeMap<(&str, Kind), f64> = BTreeMap::new();
     for (&(switch, kind), list) in &by {

@@ -73,16 +73,22 @@ pub struct Cover {
     pub later_max: f64,
 }
 
-/// The chronological held-out check of [`window`] on `d` (see [`Cover`]).
+/// How many of `n` events in capture order are the earlier `fraction` (rounded down).
 #[must_use]
-pub fn chronological_cover(d: &[&capture::Description], percentile: f64, fraction: f64) -> Cover {
+pub fn earlier_count(n: usize, fraction: f64) -> usize {
     #[allow(
         clippy::cast_possible_truncation,
         clippy::cast_sign_loss,
         clippy::cast_precision_loss
     )]
-    let cut = ((d.len() as f64 * fraction).floor() as usize).min(d.len());
-    let (earlier, later) = d.split_at(cut);
+    let k = (n as f64 * fraction).floor() as usize;
+    k.min(n)
+}
+
+/// The chronological held-out check of [`window`] on `d` (see [`Cover`]).
+#[must_use]
+pub fn chronological_cover(d: &[&capture::Description], percentile: f64, fraction: f64) -> Cover {
+    let (earlier, later) = d.split_at(earlier_count(d.len(), fraction));
     let w = window(earlier, percentile);
     Cover {
         window: w,
