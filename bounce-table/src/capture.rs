@@ -669,6 +669,24 @@ pub struct Description {
     pub bursts: usize,
     /// How many of `flights` belong to the first burst.
     pub first_burst_flights: usize,
+    /// A press only: the longest closed dwell of the first burst after which the contact
+    /// opens again, as a share of the burst's longest resolved flight (see [`Hold`]).
+    pub hold: Option<Hold>,
+}
+
+/// The longest closed dwell inside a press's first burst. A Newton impact has no dwell at
+/// all, and a compliant contact dwells for its contact time, short beside the flights; a dwell
+/// as long as the flights, after which the contact opens again, is what two bodies with unequal
+/// partial frequencies do once their impacts have accumulated and they move together, until the
+/// pair's swing turns the contact force tensile (the paper's Eq. 1): a reopening.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Hold {
+    /// When the dwell starts, from the first change (s).
+    pub at: f64,
+    /// How long the contact holds (s).
+    pub dwell: f64,
+    /// The dwell over the burst's longest resolved flight.
+    pub share: f64,
 }
 
 impl Event {
@@ -704,6 +722,7 @@ impl Event {
             (Some(a), Some(b)) => b - a,
             _ => 0.0,
         };
+        let hold = self.hold(resolution, burst_gap);
         Description {
             bounce,
             transitions: self.changes.len(),
@@ -713,7 +732,42 @@ impl Event {
             chatter,
             chatter_time,
             bursts,
+            hold,
         }
+    }
+
+    /// The press's [`Hold`], if any (see [`Description::hold`]).
+    fn hold(&self, resolution: f64, burst_gap: f64) -> Option<Hold> {
+        if self.kind != Kind::Press {
+            return None;
+        }
+        let first = self.changes.first()?;
+        // The first burst's intervals, the first one closed (a press has just made). Each
+        // interval ends with a change, so a closed one is always followed by an opening.
+        let burst: Vec<f64> = self
+            .changes
+            .windows(2)
+            .map(|w| w[1] - w[0])
+            .take_while(|d| *d < burst_gap)
+            .collect();
+        let longest = burst
+            .iter()
+            .skip(1)
+            .step_by(2)
+            .filter(|d| **d >= resolution)
+            .fold(0.0, |a: f64, d| a.max(*d));
+        if longest <= 0.0 {
+            return None;
+        }
+        let i = (0..burst.len())
+            .step_by(2)
+            .filter(|&i| burst[i] >= resolution)
+            .max_by(|&i, &j| burst[i].total_cmp(&burst[j]))?;
+        Some(Hold {
+            at: self.changes[i] - first,
+            dwell: burst[i],
+            share: burst[i] / longest,
+        })
     }
 }
 
@@ -753,6 +807,29 @@ mod tests {
         assert!((d.bounce - 61e-6).abs() < 1e-12);
         assert!((d.chatter_time - 1e-6).abs() < 1e-12);
         assert_eq!((d.bursts, d.first_burst_flights), (1, 1));
+    }
+
+    #[test]
+    fn a_press_holds_for_its_longest_closed_dwell_inside_the_first_burst() {
+        // closed 5, open 100, closed 2 (chatter), open 40, closed 300, open 20, closed; then,
+        // after a quiet 10 ms (a late burst), a longer dwell that does not count.
+        let mut e = Event {
+            switch: "sw".into(),
+            origin: String::new(),
+            kind: Kind::Press,
+            changes: vec![0.0, 5e-6, 105e-6, 107e-6, 147e-6, 447e-6, 467e-6],
+        };
+        let h = e.describe(3e-6, 5e-3).hold.unwrap();
+        assert!((h.at - 147e-6).abs() < 1e-12 && (h.dwell - 300e-6).abs() < 1e-12);
+        assert!((h.share - 3.0).abs() < 1e-9, "{h:?}");
+        e.changes.extend([10.467e-3, 10.468e-3, 20.0e-3, 20.1e-3]);
+        assert_eq!(e.describe(3e-6, 5e-3).hold, Some(h));
+        // No resolved flight: nothing to compare a dwell with. A release has no hold.
+        e.changes = vec![0.0, 300e-6, 301e-6];
+        assert_eq!(e.describe(3e-6, 5e-3).hold, None);
+        e.changes = vec![0.0, 5e-6, 105e-6, 405e-6, 406e-6];
+        e.kind = Kind::Release;
+        assert_eq!(e.describe(3e-6, 5e-3).hold, None);
     }
 
     #[test]

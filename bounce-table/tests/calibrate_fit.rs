@@ -6,7 +6,8 @@
 mod common;
 
 use bounce_table::calibrate::{
-    group, random_splits, validations, BounceModel, ImpactFit, LogNormal,
+    group, random_splits, reopening_threshold, validations, window, BounceModel, ImpactFit,
+    LogNormal,
 };
 use bounce_table::capture::{Event, Kind};
 use bounce_table::spreads::SplitMix;
@@ -301,6 +302,10 @@ fn the_mixture_quantile_is_the_inverse_of_its_distribution() {
         late: 0.0,
         burst: Some(l(-7.0, 0.8)),
         late_bounce: None,
+        reopened: 0.0,
+        reopened_bounce: None,
+        reopening_dwell: None,
+        reopening: None,
         impact: false,
         closed_share: None,
         predictive: None,
@@ -346,4 +351,98 @@ fn the_mixture_quantile_is_the_inverse_of_its_distribution() {
         (same.sigma, same.cdf(0.999e-3), same.cdf(1e-3)),
         (0.0, 0.0, 1.0)
     );
+}
+
+/// A press of a stuck pair that may reopen: a Newton burst (the reference's impacts, with a
+/// short closed contact time of `contact` s at each), then, if `reopen`, the contact holds for
+/// `hold` s, opens again and makes a second, smaller burst.
+fn two_stage_press(start: f64, v0: f64, contact: f64, reopen: Option<(f64, f64)>) -> Event {
+    let burst = |v: f64, from: f64, changes: &mut Vec<f64>| {
+        let scene = OneBody {
+            omega: OMEGA,
+            delta: DELTA,
+            restitution: 0.6,
+            zeta: 0.0,
+            closing_speed: v,
+            threshold: None,
+        };
+        let mut impacts = Vec::new();
+        simulate_observed(&scene, DEFAULT_BUDGET, |t, _| impacts.push(t))
+            .expect("the reference simulates it");
+        let mut now = from;
+        for w in impacts.windows(2).take(8) {
+            now += contact;
+            changes.push(now);
+            now += w[1] - w[0];
+            changes.push(now);
+        }
+        now
+    };
+    let mut changes = vec![start];
+    let end = burst(v0, start, &mut changes);
+    if let Some((hold, v1)) = reopen {
+        // Closed since `end`: the second burst's first opening ends the hold.
+        burst(v1, end + hold - contact, &mut changes);
+    }
+    Event {
+        switch: "two-stage".into(),
+        origin: String::new(),
+        kind: Kind::Press,
+        changes,
+    }
+}
+
+#[test]
+fn a_stuck_pair_that_reopens_is_a_part_of_its_own() {
+    // 40 % of presses reopen: the pair holds 400 us (about 19 times the first flight, 2 j / Omega
+    // = 21 us at j = R v0 / (Omega |Delta|) = 0.067) and bounces again at a third of the speed;
+    // the others settle after the first burst. Closing speeds vary by +-10 %, holds by +-10 %,
+    // contact times are 5 us.
+    let mut rng = SplitMix(5);
+    let events: Vec<Event> = (0..40)
+        .map(|i| {
+            let v0 = 0.07 * (1.0 + 0.2 * (rng.unit() - 0.5));
+            let reopen = (i % 5 < 2).then(|| (400e-6 * (1.0 + 0.2 * (rng.unit() - 0.5)), v0 / 3.0));
+            two_stage_press(f64::from(i), v0, 5e-6, reopen)
+        })
+        .collect();
+    let groups = group(&events, 3e-6, GAP);
+    let d: Vec<_> = groups.values().flatten().collect();
+    let one_burst: Vec<_> = d.iter().copied().filter(|x| x.bounce > 0.0).collect();
+    // The holds: 5 us beside ~21 us flights when plain (a share of at most 0.3), 15-24 times
+    // the longest flight when reopening; the threshold falls between.
+    let c = reopening_threshold(&one_burst).expect("the data ask for the split");
+    assert!(c > 0.3 && c < 24.0, "{c}");
+    let m = BounceModel::fit(&d);
+    assert!(
+        (m.reopened - 0.4).abs() < 1e-12 && (m.single - 0.6).abs() < 1e-12,
+        "{m:?}"
+    );
+    let dwell = m.reopening_dwell.unwrap();
+    assert!((dwell / 400e-6 - 1.0).abs() <= 0.1, "{dwell}");
+    // Two narrow parts: the window stays near the longest reopening, where one log-normal over
+    // both modes reaches much further.
+    let w = window(&d, 0.99).recommended();
+    let largest = d.iter().map(|x| x.bounce).fold(0.0, f64::max);
+    assert!(w < 1.3 * largest, "{w} vs {largest}");
+    let one = LogNormal::fit(&d.iter().map(|x| x.bounce).collect::<Vec<_>>()).unwrap();
+    let one_p99 = (one.mu + 2.326 * one.sigma).exp();
+    assert!(w < one_p99, "{w} vs one log-normal's {one_p99}");
+
+    // The same presses with no reopening: the holds are all contact times, nothing splits.
+    let plain: Vec<Event> = (0..40)
+        .map(|i| {
+            two_stage_press(
+                f64::from(i),
+                0.07 * (1.0 + 0.01 * f64::from(i % 7)),
+                5e-6,
+                None,
+            )
+        })
+        .collect();
+    let groups = group(&plain, 3e-6, GAP);
+    let d: Vec<_> = groups.values().flatten().collect();
+    assert_eq!(reopening_threshold(&d), None);
+    let m = BounceModel::fit(&d);
+    assert_eq!((m.reopened, m.single), (0.0, 1.0));
 }

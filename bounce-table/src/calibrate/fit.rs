@@ -134,6 +134,74 @@ impl LogNormal {
     }
 }
 
+/// Maximum log-likelihood of a normal fitted to `x` (its spread floored at 1e-3 in ln t, a
+/// tenth of a percent, so identical durations do not give an infinite likelihood).
+fn normal_log_likelihood(x: &[f64]) -> f64 {
+    #[allow(clippy::cast_precision_loss)]
+    let n = x.len() as f64;
+    let mean = x.iter().sum::<f64>() / n;
+    let var = (x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / n).max(1e-6);
+    -0.5 * n * ((2.0 * core::f64::consts::PI * var).ln() + 1.0)
+}
+
+/// -2 ln L + parameters ln n of labelled log-normal parts (each part's share and its
+/// log-normal), over all their durations; `extra` parameters are added (a threshold chosen).
+fn information(parts: &[&[f64]], extra: f64) -> f64 {
+    #[allow(clippy::cast_precision_loss)]
+    let n = parts.iter().map(|p| p.len()).sum::<usize>() as f64;
+    let mut likelihood = 0.0;
+    for p in parts.iter().filter(|p| !p.is_empty()) {
+        #[allow(clippy::cast_precision_loss)]
+        let k = p.len() as f64;
+        let logs: Vec<f64> = p.iter().map(|t| t.ln()).collect();
+        likelihood += k * (k / n).ln() + normal_log_likelihood(&logs);
+    }
+    #[allow(clippy::cast_precision_loss)]
+    let params = 3.0 * parts.len() as f64 - 1.0 + extra;
+    -2.0 * likelihood + params * n.ln()
+}
+
+/// The bounces of one-burst events that reopen (their hold at least `threshold`) and of the
+/// others.
+fn split_at(one_burst: &[&capture::Description], threshold: Option<f64>) -> (Vec<f64>, Vec<f64>) {
+    let (mut reopen, mut plain) = (Vec::new(), Vec::new());
+    for x in one_burst {
+        match (x.hold, threshold) {
+            (Some(h), Some(c)) if h.share >= c => reopen.push(x.bounce),
+            _ => plain.push(x.bounce),
+        }
+    }
+    (reopen, plain)
+}
+
+/// The threshold on [`capture::Hold::share`] that splits one-burst presses into plain and
+/// reopening parts, when the data ask for it: among the shares observed, the one whose split
+/// has the lowest Bayesian information criterion (a share, two log-normals and the threshold:
+/// 6 parameters), if that is lower than one log-normal's (2) and both parts have at least
+/// [`MIN_FIT`] events. `None` otherwise.
+#[must_use]
+pub fn reopening_threshold(one_burst: &[&capture::Description]) -> Option<f64> {
+    if one_burst
+        .iter()
+        .any(|x| !(x.bounce.is_finite() && x.bounce > 0.0))
+    {
+        return None;
+    }
+    let all: Vec<f64> = one_burst.iter().map(|x| x.bounce).collect();
+    let mut best = (information(&[&all], 0.0), None);
+    for c in one_burst.iter().filter_map(|x| x.hold.map(|h| h.share)) {
+        let (reopen, plain) = split_at(one_burst, Some(c));
+        if plain.len() < MIN_FIT || reopen.len() < MIN_FIT {
+            continue;
+        }
+        let bic = information(&[&plain, &reopen], 1.0);
+        if bic < best.0 {
+            best = (bic, Some(c));
+        }
+    }
+    best.1
+}
+
 /// The fitted bounce model of one switch and kind: the impact model where it holds, and
 /// empirical terms for what it does not produce. Each event is one of three kinds:
 ///
@@ -145,6 +213,14 @@ impl LogNormal {
 ///   observed burst durations;
 /// - a late burst (the contact bounced again after settling for at least the burst gap):
 ///   log-normal in the event's whole bounce, with the share observed.
+///
+/// One-burst presses that reopen (a closed dwell as long as the flights, then more bounce: the
+/// stuck pair of two bodies with unequal partial frequencies, [`capture::Reopening`]) are a part
+/// of their own, log-normal in their whole bounce, when the data ask for it: both parts have at
+/// least [`MIN_FIT`] events and the split lowers the Bayesian information criterion of the
+/// one-burst durations (shares and two log-normals against one log-normal). A stuck pair's
+/// reopening adds a dwell and a second burst to the first, so such a capture's bounces are
+/// bimodal; one log-normal over both modes is wide and its tail reaches far past either.
 ///
 /// The model's quantiles are those of that mixture; with few events its log-normal tails go
 /// past the largest event observed, which a window wants.
@@ -162,6 +238,16 @@ pub struct BounceModel {
     pub burst: Option<LogNormal>,
     /// The late-burst events' bounce.
     pub late_bounce: Option<LogNormal>,
+    /// Share of one-burst events that reopen, when they are a part of their own (else 0, and
+    /// they are in `single`).
+    pub reopened: f64,
+    /// The reopening events' bounce, when they are a part of their own.
+    pub reopened_bounce: Option<LogNormal>,
+    /// The median dwell before a reopening, over the one-burst events that reopen (s).
+    pub reopening_dwell: Option<f64>,
+    /// The threshold on the hold's share of the longest flight that makes a reopening, when
+    /// reopenings are a part of their own ([`reopening_threshold`]).
+    pub reopening: Option<f64>,
     /// Whether the burst term is the impact model's (else the observed bursts').
     pub impact: bool,
     /// Median (dwell + chatter time) / flight time over the one-burst events with a resolved
@@ -178,10 +264,25 @@ impl BounceModel {
     pub fn fit(d: &[&capture::Description]) -> Self {
         let fit = ImpactFit::new(d);
         let clean: Vec<_> = d.iter().filter(|x| x.bounce <= 0.0).collect();
-        let single: Vec<_> = d
+        let one_burst: Vec<&capture::Description> = d
             .iter()
+            .copied()
             .filter(|x| x.bounce > 0.0 && x.bursts <= 1)
             .collect();
+        let reopening = reopening_threshold(&one_burst);
+        let reopens = |x: &capture::Description| matches!((x.hold, reopening), (Some(h), Some(c)) if h.share >= c);
+        let reopening_dwell = nearest_rank(
+            &sorted(
+                one_burst
+                    .iter()
+                    .filter(|x| reopens(x))
+                    .filter_map(|x| x.hold.map(|h| h.dwell))
+                    .collect(),
+            ),
+            0.5,
+        );
+        let (reopened, _) = split_at(&one_burst, reopening);
+        let single: Vec<_> = one_burst.iter().filter(|x| !reopens(x)).collect();
         let late: Vec<f64> = d
             .iter()
             .filter(|x| x.bounce > 0.0 && x.bursts > 1)
@@ -223,19 +324,27 @@ impl BounceModel {
             late: share(late.len()),
             burst: LogNormal::fit(&burst),
             late_bounce: LogNormal::fit(&late),
+            reopened: share(reopened.len()),
+            reopened_bounce: LogNormal::fit(&reopened),
+            reopening_dwell,
+            reopening,
             impact,
             closed_share,
-            predictive: Predictive::fit(clean.len(), &[&burst, &late]),
+            predictive: Predictive::fit(clean.len(), &[&burst, &reopened, &late]),
         }
     }
 
     /// The bouncing parts with their shares; `None` if a part that occurs could not be fitted.
     fn parts(&self) -> Option<Vec<(f64, LogNormal)>> {
-        [(self.single, self.burst), (self.late, self.late_bounce)]
-            .into_iter()
-            .filter(|(w, _)| *w > 0.0)
-            .map(|(w, l)| l.map(|l| (w, l)))
-            .collect()
+        [
+            (self.single, self.burst),
+            (self.reopened, self.reopened_bounce),
+            (self.late, self.late_bounce),
+        ]
+        .into_iter()
+        .filter(|(w, _)| *w > 0.0)
+        .map(|(w, l)| l.map(|l| (w, l)))
+        .collect()
     }
 
     /// P(bounce <= t); `None` if a part that occurs could not be fitted.

@@ -15,7 +15,7 @@ use std::collections::BTreeMap;
 use crate::capture::{self, Event, Kind};
 
 pub use export::export;
-pub use fit::{BounceModel, ImpactFit, LogNormal, MIN_FIT};
+pub use fit::{reopening_threshold, BounceModel, ImpactFit, LogNormal, MIN_FIT};
 pub use heldout::{
     random_splits, validations, RatioSpread, Validation, RANDOM_SPLITS, VALIDATION_QUANTILES,
 };

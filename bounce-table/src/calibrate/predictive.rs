@@ -80,7 +80,7 @@ impl Predictive {
         let pooled = (freedom > 0).then(|| ((squares / freedom as f64).sqrt(), freedom as f64));
         let events = clean + parts.iter().map(|p| p.len()).sum::<usize>();
         #[allow(clippy::cast_precision_loss)]
-        let share = |k: usize| (k as f64 + 1.0) / (events as f64 + 3.0);
+        let share = |k: usize| (k as f64 + 1.0) / (events as f64 + parts.len() as f64 + 1.0);
         let mut fitted = Vec::new();
         for l in logs.iter().filter(|l| !l.is_empty()) {
             let (centre, squares) = mean_and_squares(l);

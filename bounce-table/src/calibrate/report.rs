@@ -104,9 +104,13 @@ pub fn assess(groups: &Groups<'_>, percentile: f64, seed: u64) -> String {
          least the burst gap (a late burst). Bursts and late-burst bounces are log-normal (median x/ geometric \
          spread). The burst term is the impact model's (first flight / (1 - R), times 1 + the closed share: \
          the dwell and chatter a Newton impact does not have) where it holds, else the observed bursts'. \
+         A press whose contact holds, inside its burst, for a dwell of at least a threshold share of its longest \
+         flight and then opens again reopens: the stuck pair of two bodies with unequal partial frequencies, \
+         whose swing turns the contact force tensile. Reopening presses are a part of their own where that \
+         lowers the Bayesian information criterion (threshold and dwell median beside them). \
          Last column: the model's quantiles over the capture's, on every event.\n\n\
-         | switch | kind | events | clean | one burst | burst bounce | closed share | late burst | late bounce | burst term | model / observed P50 / P90 / P99 |\n\
-         |---|---|---:|---:|---:|---:|---:|---:|---:|---|---:|\n",
+         | switch | kind | events | clean | one burst | burst bounce | closed share | reopens | reopening bounce | threshold / dwell | late burst | late bounce | burst term | model / observed P50 / P90 / P99 |\n\
+         |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|\n",
     );
     let mut checks = String::from(
         "\n## Held-out check\n\nFit on one half, predict the other half's bounce P50 / P90 / P99: \
@@ -125,7 +129,7 @@ pub fn assess(groups: &Groups<'_>, percentile: f64, seed: u64) -> String {
     let mut windows = format!(
         "\n## Windows\n\nP{p} of the fitted model's posterior predictive: the bounce of the next event, with \
          the uncertainty of shares and log-normal spreads fitted to this many events (Student t parts, \
-         shares (k + 1) / (n + 3), a part with fewer than 3 events borrowing the others' spread); never \
+         shares (k + 1) / (n + parts + 1), a part with fewer than 3 events borrowing the others' spread); never \
          below the largest bounce observed. A window more than {FAR_BEYOND} times the largest observed says why.\n\n\
          | switch | kind | largest observed | predictive P{p} | window | note | explained by |\n|---|---|---:|---:|---:|---|---|\n",
         p = percentile * 100.0
@@ -154,7 +158,7 @@ pub fn assess(groups: &Groups<'_>, percentile: f64, seed: u64) -> String {
         let all = sorted(refs.iter().map(|x| x.bounce).collect());
         let in_sample = VALIDATION_QUANTILES.map(|q| ratio(m.quantile(q), nearest_rank(&all, q)));
         model.push_str(&format!(
-            "| {switch} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
+            "| {switch} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
             kind.name(),
             m.events,
             pct(m.clean),
@@ -162,6 +166,11 @@ pub fn assess(groups: &Groups<'_>, percentile: f64, seed: u64) -> String {
             lognormal_text(m.burst),
             m.closed_share
                 .map_or_else(|| "-".to_owned(), |c| format!("{c:.2}")),
+            pct(m.reopened),
+            lognormal_text(m.reopened_bounce),
+            m.reopening
+                .zip(m.reopening_dwell)
+                .map_or_else(|| "-".to_owned(), |(c, d)| format!("{c:.2} / {}", time(d))),
             pct(m.late),
             lognormal_text(m.late_bounce),
             if m.impact { "impact model" } else { "observed" },
