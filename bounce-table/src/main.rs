@@ -23,7 +23,7 @@ const USAGE: &str = "usage: bounce-table [OPTIONS] [SCENE_FILE]
                               [--quiet S] [--signal NAME] [--active-high]
                               [--skip-section NAME]
                               [--percentile P] [--seed N] [--export c|rust] [--plot DIR]
-                              [--events] CAPTURE
+                              [--events] [--contact-models] CAPTURE
 
 Prints predicted bounce and debounce windows: for the built-in catalogue of typical switches
 (physics.md sec. 7: assumed values, not a datasheet), or for the switches of SCENE_FILE
@@ -69,6 +69,8 @@ empirical quantiles on held-out halves, and recommends windows. High = open unle
   --seed N             the random held-out split's seed (1)
   --export c|rust      print only the windows, as #defines or Rust constants (ns)
   --events             print only each event's description, one CSV row per event
+  --contact-models     also fit the two-body and compliant-contact models to each switch's
+                       presses and check them on held-out halves (about a minute)
   --plot DIR           also write SWITCH-KIND.svg: observed bounce distribution vs the models";
 
 struct Options {
@@ -288,6 +290,9 @@ fn main() -> ExitCode {
                     "{}",
                     calibrate::assess(&groups, options.percentile, options.seed)
                 );
+                if options.contact_models {
+                    print!("{}", calibrate::contact::report(&groups, options.seed));
+                }
                 ExitCode::SUCCESS
             }
             Err(e) => {

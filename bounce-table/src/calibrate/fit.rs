@@ -214,11 +214,12 @@ pub fn reopening_threshold(one_burst: &[&capture::Description]) -> Option<f64> {
 /// - a late burst (the contact bounced again after settling for at least the burst gap):
 ///   log-normal in the event's whole bounce, with the share observed.
 ///
-/// One-burst presses that reopen (a closed dwell as long as the flights, then more bounce: the
-/// stuck pair of two bodies with unequal partial frequencies, [`capture::Reopening`]) are a part
-/// of their own, log-normal in their whole bounce, when the data ask for it: both parts have at
-/// least [`MIN_FIT`] events and the split lowers the Bayesian information criterion of the
-/// one-burst durations (shares and two log-normals against one log-normal). A stuck pair's
+/// One-burst presses that reopen (a closed dwell comparable to the flights, then more bounce:
+/// the stuck pair of two bodies with unequal partial frequencies, [`capture::Hold`]) are a part
+/// of their own, log-normal in their whole bounce, when the data ask for it
+/// ([`reopening_threshold`]: the hold's share of the longest flight that best splits them,
+/// if the split lowers the Bayesian information criterion and leaves both parts at least
+/// [`MIN_FIT`] events). A stuck pair's
 /// reopening adds a dwell and a second burst to the first, so such a capture's bounces are
 /// bimodal; one log-normal over both modes is wide and its tail reaches far past either.
 ///

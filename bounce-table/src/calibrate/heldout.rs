@@ -64,7 +64,7 @@ fn validate(
 }
 
 /// `d` shuffled (Fisher-Yates, `rng`) and cut in two halves.
-fn random_halves<'a>(
+pub(super) fn random_halves<'a>(
     d: &[&'a capture::Description],
     rng: &mut crate::spreads::SplitMix,
 ) -> (Vec<&'a capture::Description>, Vec<&'a capture::Description>) {

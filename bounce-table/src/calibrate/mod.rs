@@ -1,6 +1,7 @@
 //! `bounce-table calibrate`: read a capture of a real switch and describe its bounce, per switch
 //! and per kind (press, release), at the instrument's resolution.
 
+pub mod contact;
 mod export;
 mod fit;
 mod heldout;

@@ -43,6 +43,8 @@ pub struct Options {
     pub plot: Option<String>,
     /// Print every event's description (CSV) instead of the report.
     pub events: bool,
+    /// Also fit the real-contact models (slow: tens of seconds).
+    pub contact_models: bool,
 }
 
 fn seconds(name: &str, v: &str) -> Result<f64, String> {
@@ -70,6 +72,7 @@ pub fn options(args: &[String]) -> Result<Options, String> {
     let mut export = None;
     let mut plot = None;
     let mut events = false;
+    let mut contact_models = false;
     let mut it = args.iter();
     while let Some(arg) = it.next() {
         let mut value = |name: &str| it.next().cloned().ok_or(format!("{name} needs a value"));
@@ -105,6 +108,7 @@ pub fn options(args: &[String]) -> Result<Options, String> {
             }
             "--plot" => plot = Some(value("--plot")?),
             "--events" => events = true,
+            "--contact-models" => contact_models = true,
             "--export" => {
                 export = Some(match value("--export")?.as_str() {
                     "c" => false,
@@ -144,6 +148,7 @@ pub fn options(args: &[String]) -> Result<Options, String> {
         export,
         plot,
         events,
+        contact_models,
     })
 }
 

@@ -9,6 +9,7 @@
 //! - `impacts_total`: the total when finite, `None` when infinite (Zeno or endless).
 
 pub mod brent;
+pub mod compliant;
 pub mod hereditary;
 pub mod one_body;
 pub mod two_body;
@@ -95,6 +96,8 @@ pub enum Failure {
     Budget(u64),
     /// A parameter is outside the model (named).
     Invalid(&'static str),
+    /// The event search lost an event it knows exists (named), in floating point.
+    Unresolved(&'static str),
 }
 
 impl std::fmt::Display for Failure {
@@ -108,6 +111,7 @@ impl std::fmt::Display for Failure {
                 "more than {n} impacts: raise the budget or the threshold"
             ),
             Self::Invalid(p) => write!(f, "{p} is invalid"),
+            Self::Unresolved(e) => write!(f, "{e} could not be resolved in floating point"),
         }
     }
 }

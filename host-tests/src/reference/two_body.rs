@@ -40,7 +40,7 @@ pub struct TwoBodies {
 }
 
 /// (x, v) of x'' + 2 zeta w x' + w^2 x = 0 after time t from (x0, v0).
-fn evolve(w: f64, zeta: f64, x0: f64, v0: f64, t: f64) -> (f64, f64) {
+pub(crate) fn evolve(w: f64, zeta: f64, x0: f64, v0: f64, t: f64) -> (f64, f64) {
     if zeta < 1.0 {
         let a = zeta * w;
         let wd = w * (1.0 - zeta * zeta).sqrt();
@@ -293,13 +293,38 @@ fn separation(s: &TwoBodies, x2: f64, v: f64) -> Result<Option<f64>, Failure> {
     Err(Failure::Budget(4_000_000))
 }
 
+/// What happens to the contact, in time order, for a trace of the bounce.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Contact {
+    /// A resolved impact at this time (s): the contact closes and opens again at once.
+    Impact(f64),
+    /// The impacts accumulated (their summed Zeno tail ends here, s): the bodies stick and move
+    /// together, the contact closed.
+    Stick(f64),
+    /// The stuck pair separates here (s): the contact force turned tensile.
+    Separate(f64),
+}
+
 /// Simulates two bodies exactly.
 ///
 /// # Errors
 /// [`Failure::Invalid`] for parameters outside the model, [`Failure::NeedsThreshold`] when the
 /// impacts never end and no threshold is given, [`Failure::Budget`] past `budget` impacts.
-#[allow(clippy::too_many_lines)]
 pub fn simulate(s: &TwoBodies, budget: u64) -> Result<Outcome, Failure> {
+    simulate_traced(s, budget, |_| {})
+}
+
+/// [`simulate`], calling `on_contact` at every resolved impact, stick and separation, in time
+/// order (not the impacts of a summed Zeno tail).
+///
+/// # Errors
+/// As [`simulate`].
+#[allow(clippy::too_many_lines)]
+pub fn simulate_traced(
+    s: &TwoBodies,
+    budget: u64,
+    mut on_contact: impl FnMut(Contact),
+) -> Result<Outcome, Failure> {
     let positive = |x: f64| x.is_finite() && x > 0.0;
     if !(s.m.iter().all(|m| positive(*m)) && s.c.iter().all(|c| positive(*c))) {
         return Err(Failure::Invalid("two_body"));
@@ -343,6 +368,7 @@ pub fn simulate(s: &TwoBodies, budget: u64) -> Result<Outcome, Failure> {
         let u = state[1] - state[3];
         let p = (1.0 + r) * u;
         impacts += 1;
+        on_contact(Contact::Impact(time.value()));
         if first.len() < 5 {
             first.push((time.value(), p));
         }
@@ -386,6 +412,7 @@ pub fn simulate(s: &TwoBodies, budget: u64) -> Result<Outcome, Failure> {
             let t_stick = time.value() + t_f / (1.0 - r);
             ever_infinite = true;
             let v = (m1 * state[1] + m2 * state[3]) / big_m;
+            on_contact(Contact::Stick(t_stick));
             match separation(s, state[2], v)? {
                 None => {
                     return Ok(Outcome::accumulated(
@@ -413,9 +440,11 @@ pub fn simulate(s: &TwoBodies, budget: u64) -> Result<Outcome, Failure> {
                         (u2 + x_eq, v2)
                     };
                     time.add(t_stick - time.value() + dt);
+                    on_contact(Contact::Separate(time.value()));
                     let apart = Free::new(s, [x2 + s.delta, v2, x2, v2]);
                     match apart.next_impact(400_000_000)? {
-                        None => unreachable!("a preload always closes again"),
+                        // A preload always closes again: the search lost the root.
+                        None => return Err(Failure::Unresolved("the closing after a separation")),
                         Some(t) => {
                             state = apart.at(t);
                             time.add(t);
