@@ -1,7 +1,7 @@
 //! `bounce-table`: debounce windows for switches, from physics.
 //!
 //! ```text
-//! bounce-table [OPTIONS] [SCENE_FILE]      the catalogue of physics.md sec. 7, or your switches
+//! bounce-table [OPTIONS] [SCENE_FILE]      the catalogue of typical switches, or your switches
 //! bounce-table eval [OPTIONS] < scenes.jsonl
 //! bounce-table calibrate [OPTIONS] CAPTURE   describe a capture of a real switch
 //! ```
@@ -26,7 +26,7 @@ const USAGE: &str = "usage: bounce-table [OPTIONS] [SCENE_FILE]
                               [--events] [--contact-models] CAPTURE
 
 Prints predicted bounce and debounce windows: for the built-in catalogue of typical switches
-(physics.md sec. 7: assumed values, not a datasheet), or for the switches of SCENE_FILE
+(assumed values over assumed ranges, not a datasheet; windows the P99.9 over the ranges), or for the switches of SCENE_FILE
 (.toml with [[switch]] tables, .json, or .jsonl; the keys of `eval`, and any number may be a
 tolerance: {min = a, max = b} or {value = x, spread = s}).
 

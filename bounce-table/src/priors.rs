@@ -101,6 +101,78 @@ impl Prior {
 /// The percentile of a prior's window.
 pub const PRIOR_PERCENTILE: f64 = 0.999;
 
+/// How far each parameter of a catalogue switch is taken to range over switches of its type:
+/// relative half-widths (uniform), and R's absolute half-width. Assumed, not measured: a
+/// catalogue entry is a typical value, and these say how much the switches sold under that
+/// name vary. The catalogue's windows are the P99.9 of the predicted bounce over these ranges.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ranges {
+    /// Moving mass: +-20 %.
+    pub mass: f64,
+    /// Spring stiffness: +-20 %.
+    pub stiffness: f64,
+    /// Contact (preload) force: +-30 %.
+    pub preload_force: f64,
+    /// R: +-0.1, inside (0, 1).
+    pub restitution: f64,
+    /// Damping ratio: +-50 %.
+    pub damping_ratio: f64,
+    /// Closing speed: +-50 % (hands and coil drives vary most).
+    pub closing_speed: f64,
+}
+
+/// The ranges of every catalogue switch.
+pub const CATALOGUE_RANGES: Ranges = Ranges {
+    mass: 0.2,
+    stiffness: 0.2,
+    preload_force: 0.3,
+    restitution: 0.1,
+    damping_ratio: 0.5,
+    closing_speed: 0.5,
+};
+
+/// Published bounce figures for a catalogue switch's type, beside the model's range.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Published {
+    /// The catalogue entry.
+    pub switch: &'static str,
+    /// The longest bounce published for the type (s).
+    pub max: f64,
+    /// What was published, and by whom.
+    pub evidence: &'static str,
+}
+
+/// The catalogue entries whose types have published figures. The rest (MEMS switches, power
+/// relays, contactors) rest on the model's ranges alone.
+pub const PUBLISHED: [Published; 4] = [
+    Published {
+        switch: "tactile dome",
+        max: 5e-3,
+        evidence: "tactile switch datasheets promise at most 5 ms; a survey of 18 hand-operated switches found up to 6.2 ms, and one at 157 ms",
+    },
+    Published {
+        switch: "keyboard leaf contact",
+        max: 5e-3,
+        evidence: "keyboard switch datasheets promise at most 5 ms; a survey of 18 hand-operated switches found up to 6.2 ms, and one at 157 ms",
+    },
+    Published {
+        switch: "miniature reed",
+        max: 1e-3,
+        evidence: "reed switches are quoted at 0.1-1 ms",
+    },
+    Published {
+        switch: "signal relay",
+        max: 5e-3,
+        evidence: "signal relays are quoted at about 1 ms typical, 5 ms at most",
+    },
+];
+
+/// The published figures for a catalogue entry, if any.
+#[must_use]
+pub fn published(switch: &str) -> Option<&'static Published> {
+    PUBLISHED.iter().find(|p| p.switch == switch)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

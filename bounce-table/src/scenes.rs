@@ -41,17 +41,33 @@ impl std::fmt::Display for FileError {
     }
 }
 
-/// The typical switches of physics.md sec. 7.
+/// The catalogue's typical switches, each parameter over its assumed range
+/// ([`crate::priors::CATALOGUE_RANGES`]): their windows are a high percentile over those ranges.
 #[must_use]
 pub fn catalogue() -> Vec<Entry> {
     contact_bounce::catalogue::ALL
         .iter()
         .filter_map(|s| {
-            let scene = json!({
-                "name": s.name, "mass": s.mass, "stiffness": s.stiffness, "preload_force": s.preload_force,
-                "restitution": s.restitution, "damping_ratio": s.damping_ratio, "closing_speed": s.closing_speed,
+            let r = crate::priors::CATALOGUE_RANGES;
+            let around = |x: f64, spread: f64| json!({"value": x, "spread": spread});
+            // R within +-0.1, inside (0, 1).
+            let restitution = json!({
+                "min": (s.restitution - r.restitution).max(0.01),
+                "max": (s.restitution + r.restitution).min(0.99),
             });
-            Template::parse(&scene).ok().map(|template| Entry { name: s.name.to_owned(), template })
+            let scene = json!({
+                "name": s.name,
+                "mass": around(s.mass, r.mass),
+                "stiffness": around(s.stiffness, r.stiffness),
+                "preload_force": around(s.preload_force, r.preload_force),
+                "restitution": restitution,
+                "damping_ratio": around(s.damping_ratio, r.damping_ratio),
+                "closing_speed": around(s.closing_speed, r.closing_speed),
+            });
+            Template::parse(&scene).ok().map(|template| Entry {
+                name: s.name.to_owned(),
+                template,
+            })
         })
         .collect()
 }
