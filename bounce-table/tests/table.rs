@@ -45,6 +45,23 @@ fn no_arguments_print_the_catalogue_as_typical_values() {
             .count(),
         8
     );
+    // Every window is a percentile over the assumed ranges, and the
+    // published figures of the four types that have them are printed beside it.
+    assert_eq!(
+        text.lines()
+            .filter(|l| l.contains("(P99.9 of 4000)"))
+            .count(),
+        8
+    );
+    assert!(text.contains("Published for these types"));
+    for name in [
+        "miniature reed",
+        "tactile dome",
+        "keyboard leaf contact",
+        "signal relay",
+    ] {
+        assert!(text.contains(&format!("- {name}: ")), "{name}");
+    }
 }
 
 #[test]
