@@ -29,6 +29,7 @@ mod closed;
 mod debounce;
 mod error;
 mod float;
+mod learn;
 mod map;
 mod mechanisms;
 mod method;
@@ -44,6 +45,9 @@ pub use closed::Estimate;
 pub use debounce::{Debouncer, Edge, Mode, Polarity, State, Windows};
 pub use error::{Error, Parameter, Reason, PHYSICAL_RANGE};
 pub use float::{Float, F32_BACKEND};
+pub use learn::{
+    Learned, LearningDebouncer, LearningState, Tail, LATE_EVIDENCE, LATE_GAP, WARM_UP,
+};
 pub use map::{Impact, MapEnd, MapImpacts, DEFAULT_MAX_IMPACTS};
 pub use mechanisms::{
     restitution_rate, AnyDissipation, Asymptote, Dissipation, HarmonicSum, Hereditary, Undamped,

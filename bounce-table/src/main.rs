@@ -17,7 +17,7 @@ const USAGE: &str = "usage: bounce-table [OPTIONS] [SCENE_FILE]
        bounce-table eval [--method exact|map|averaged|closed|auto] [--tolerance X]
                          [--precision f32|f64] [--nodes N] < scenes.jsonl
        bounce-table replay [--period S] [--split F] [--time-scale X] [--switch-type TYPE]
-                           [--format table|markdown|json] [--plot DIR]
+                           [--format table|markdown|json|curve] [--plot DIR]
                            [--capture-format jsonl|csv|vcd] [calibrate's capture options] CAPTURE
        bounce-table calibrate [--format jsonl|csv|vcd] [--resolution S] [--burst-gap S]
                               [--quiet S] [--signal NAME] [--active-high]
@@ -44,10 +44,12 @@ Options:
 replay: the benchmark of debouncers on a real capture. Per switch and kind, the earlier tests
 (--split, 0.5) calibrate and the later ones are replayed through our debouncer with the
 calibrated windows (hold-off and confirm), with the switch type's prior window (physics-prior:
-the type from the switch's name or --switch-type), and through peers re-implemented from their
-documentation at their defaults (QMK, ZMK, Bounce2, debouncr, Linux and Zephyr gpio-keys).
-Rows: false edges (reported edges beyond each test's one) and latency P50/P99 from the first
-contact change.
+the type from the switch's name or --switch-type), with the learning debouncer (learned: from
+that prior, it learns online through every test of the switch in capture order and is scored on
+the later ones), and through peers re-implemented from their documentation at their defaults
+(QMK, ZMK, Bounce2, debouncr, Linux and Zephyr gpio-keys). Rows: false edges (reported edges
+beyond each test's one) and latency P50/P99 from the first contact change.
+  --format curve       instead, the learner's window and false edges after every test (CSV)
   --period S           seconds between samples of the polled debouncers (1e-3)
   --split F            the earlier share of the tests that calibrates (0.5)
   --time-scale X       every time multiplied by X (10: contactor-like, 0.1: reed-like)
@@ -174,6 +176,18 @@ fn replay_main(args: &[String]) -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    if request.output == replay::Output::Curve {
+        return match replay::learning_curves(&events, &request.settings) {
+            Ok(curves) => {
+                print!("{}", replay::curve_csv(&curves));
+                ExitCode::SUCCESS
+            }
+            Err(e) => {
+                eprintln!("bounce-table replay: {e}");
+                ExitCode::from(2)
+            }
+        };
+    }
     let lines = match replay::run(&events, &request.capture, &request.settings) {
         Ok(lines) => lines,
         Err(e) => {
@@ -205,6 +219,7 @@ fn replay_main(args: &[String]) -> ExitCode {
     }
     match request.output {
         replay::Output::Json => print!("{}", replay::json(&lines)),
+        replay::Output::Curve => {}
         replay::Output::Markdown => {
             if skipped.total() > 0 {
                 println!("{}\n", skipped.describe(request.capture.quiet));

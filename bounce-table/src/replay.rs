@@ -590,6 +590,18 @@ pub fn run(events: &[Event], c: &calibrate::Options, s: &Settings) -> Result<Vec
         calibrated.insert((switch, kind), window(&refs, c.percentile).recommended());
     }
     let mut lines = Vec::new();
+    let mut learned_lines: Vec<Line> = Vec::new();
+    for (switch, l) in learning_curves(events, s)? {
+        for (kind, score, window) in l.rows {
+            learned_lines.push(Line {
+                switch: switch.clone(),
+                kind,
+                debouncer: "learned".to_owned(),
+                window: Some(window),
+                score,
+            });
+        }
+    }
     for (&(switch, kind), list) in &by {
         let later: Vec<Trace> = list[cut(list.len())..]
             .iter()
@@ -624,7 +636,188 @@ pub fn run(events: &[Event], c: &calibrate::Options, s: &Settings) -> Result<Vec
             });
         }
     }
+    // Each learned row after its switch and kind's prior rows.
+    for l in learned_lines {
+        let at = lines
+            .iter()
+            .rposition(|x| {
+                x.switch == l.switch && x.kind == l.kind && x.debouncer.starts_with("physics-prior")
+            })
+            .map_or(lines.len(), |i| i + 1);
+        lines.insert(at, l);
+    }
     Ok(lines)
+}
+
+/// One test of the learner's run: after it, the window of its kind.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CurvePoint {
+    /// The test's number among the switch's tests, in capture order (from 1).
+    pub test: usize,
+    /// Press or release.
+    pub kind: Kind,
+    /// The learned window of that kind after the test (s).
+    pub window: f64,
+    /// Reported edges beyond the test's one true edge.
+    pub false_edges: usize,
+    /// Whether the test is in the scored (later) part.
+    pub scored: bool,
+}
+
+/// What the learner did on one switch.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Learning {
+    /// Per kind: the score on the later tests and the window learned by the last test (s).
+    pub rows: Vec<(Kind, Score, f64)>,
+    /// Every test, in order.
+    pub curve: Vec<CurvePoint>,
+}
+
+/// The learner ([`contact_bounce::LearningState`]) on every test of one switch in capture order,
+/// from `prior` (s, both kinds): it learns online through all of them, and each kind's tests
+/// from `cut(kind's count)` on are scored as the other rows are.
+///
+/// # Errors
+/// The prior does not fit [`Windows::MAX_TICKS`] samples of `period`.
+pub fn learned(events: &[&Event], prior: f64, s: &Settings) -> Result<Learning, String> {
+    let ticks = contact_bounce::window_ticks(prior, 1.0, s.period)
+        .ok()
+        .and_then(|t| u16::try_from(t).ok())
+        .filter(|t| *t <= Windows::MAX_TICKS)
+        .ok_or_else(|| {
+            format!(
+                "the prior's window does not fit {} samples of --period {}: sample less often",
+                Windows::MAX_TICKS,
+                s.period
+            )
+        })?;
+    let windows = Windows::new(ticks, ticks, Mode::HoldOff).map_err(|e| e.to_string())?;
+    let count = |k: Kind| events.iter().filter(|e| e.kind == k).count();
+    let cuts =
+        [Kind::Press, Kind::Release].map(|k| (k, calibrate::earlier_count(count(k), s.split)));
+    let mut scores: Vec<(Kind, Score)> = [Kind::Press, Kind::Release]
+        .iter()
+        .map(|&k| {
+            (
+                k,
+                Score {
+                    events: 0,
+                    false_edges: 0,
+                    tests_with_false_edges: 0,
+                    latencies: Vec::new(),
+                },
+            )
+        })
+        .collect();
+    let mut seen = [0usize; 2];
+    let mut key = contact_bounce::LearningState::new(false);
+    let mut curve = Vec::new();
+    #[allow(clippy::cast_precision_loss)]
+    let seconds = |t: u16| f64::from(t) * s.period;
+    for (n, e) in events.iter().enumerate() {
+        let slot = usize::from(e.kind == Kind::Release);
+        let i = seen[slot];
+        seen[slot] += 1;
+        // The later tests sample at the phases every other row's do (counted from the cut).
+        let p = phase(i.checked_sub(cuts[slot].1).unwrap_or(i));
+        let trace = Trace::of(e, s.time_scale);
+        key.settle(trace.closed_before);
+        // Run until the learner has watched the bounce to its end, past the last change.
+        let mut edges = Vec::new();
+        let mut k = 0u64;
+        loop {
+            #[allow(clippy::cast_precision_loss)]
+            let now = (p + k as f64) * s.period;
+            if now > trace.last() + 4.0 * s.period && key.is_settled() {
+                break;
+            }
+            if key.update(trace.closed_at(now), &windows).is_some() {
+                edges.push(now);
+            }
+            k += 1;
+        }
+        let moved = trace.closed_after() != trace.closed_before;
+        let extra = edges.len().saturating_sub(usize::from(moved));
+        let (press, release) = key.learned().windows(&windows);
+        curve.push(CurvePoint {
+            test: n + 1,
+            kind: e.kind,
+            window: seconds(if e.kind == Kind::Press {
+                press
+            } else {
+                release
+            }),
+            false_edges: extra,
+            scored: i >= cuts[slot].1,
+        });
+        if i < cuts[slot].1 {
+            continue;
+        }
+        let score = &mut scores[slot].1;
+        score.events += 1;
+        score.false_edges += extra;
+        score.tests_with_false_edges += usize::from(extra > 0);
+        if moved {
+            if let Some(&first) = edges.first() {
+                score.latencies.push(first);
+            }
+        }
+    }
+    let (press, release) = key.learned().windows(&windows);
+    Ok(Learning {
+        rows: scores
+            .into_iter()
+            .map(|(k, score)| {
+                let w = if k == Kind::Press { press } else { release };
+                (k, score, seconds(w))
+            })
+            .collect(),
+        curve,
+    })
+}
+
+/// The learner's run on every switch that has a prior (from its name or `s.switch_type`), in
+/// the order the switches first appear.
+///
+/// # Errors
+/// As [`learned`].
+pub fn learning_curves(events: &[Event], s: &Settings) -> Result<Vec<(String, Learning)>, String> {
+    let mut switches: Vec<&str> = Vec::new();
+    for e in events {
+        if !switches.contains(&e.switch.as_str()) {
+            switches.push(&e.switch);
+        }
+    }
+    let mut out = Vec::new();
+    for switch in switches {
+        if let Some(prior) = priors::from_switch_name(switch).or(s.switch_type) {
+            let all: Vec<&Event> = events.iter().filter(|e| e.switch == switch).collect();
+            let l = learned(&all, prior.window() * s.time_scale, s)
+                .map_err(|e| format!("{switch}: {e}"))?;
+            out.push((switch.to_owned(), l));
+        }
+    }
+    Ok(out)
+}
+
+/// The learning curves as CSV: switch, test, kind, window_s, false_edges, scored.
+#[must_use]
+pub fn curve_csv(curves: &[(String, Learning)]) -> String {
+    let mut out = String::from("switch,test,kind,window_s,false_edges,scored\n");
+    for (switch, l) in curves {
+        for p in &l.curve {
+            out.push_str(&format!(
+                "{},{},{},{:e},{},{}\n",
+                switch,
+                p.test,
+                p.kind.name(),
+                p.window,
+                p.false_edges,
+                p.scored
+            ));
+        }
+    }
+    out
 }
 
 fn json_number(x: Option<f64>) -> String {
@@ -749,6 +942,8 @@ pub enum Output {
     Markdown,
     /// One JSON object per row.
     Json,
+    /// The learner's window and false edges after every test (CSV).
+    Curve,
 }
 
 /// What `replay` was asked for.
@@ -812,9 +1007,10 @@ pub fn options(args: &[String]) -> Result<Request, String> {
                 output = match v.as_str() {
                     "table" | "markdown" => Output::Markdown,
                     "json" => Output::Json,
+                    "curve" => Output::Curve,
                     other => {
                         return Err(format!(
-                            "--format: '{other}' is not table, markdown or json"
+                            "--format: '{other}' is not table, markdown, json or curve"
                         ))
                     }
                 };

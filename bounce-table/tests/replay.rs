@@ -78,8 +78,8 @@ fn a_reopening_switch_gets_the_answers_the_peers_documentation_gives() {
         );
         assert_eq!(x["events"], 10);
     }
-    // 2 kinds x (2 calibrated + 2 prior (the name says rocker) + 11 peers).
-    assert_eq!(r.len(), 2 * 15);
+    // 2 kinds x (2 calibrated + 2 prior (the name says rocker) + learned + 11 peers).
+    assert_eq!(r.len(), 2 * 16);
     // The calibrated window covers the 12 ms bounce: no false edge in either mode; hold-off
     // reports at the first sample (1 ms), confirm a window after the last change.
     for mode in ["calibrated hold-off", "calibrated confirm"] {
@@ -122,6 +122,14 @@ fn a_reopening_switch_gets_the_answers_the_peers_documentation_gives() {
         .filter(|x| x["kind"] == "release")
         .all(|x| x["false_edges"] == 0));
     assert_eq!(row(&r, "press", "physics-prior hold-off")["false_edges"], 0);
+    // The learner, from the rocker's prior, through all 40 tests: no false edge, the first
+    // sample's latency, and a window learned from the 12 ms bounce seen at 1 ms samples (12 or
+    // 13 samples from the edge's sample to the last change's): 3/2 of that plus one sample.
+    let learned = row(&r, "press", "learned");
+    assert_eq!(learned["false_edges"], 0, "{learned}");
+    assert!(learned["latency_p99_s"].as_f64().unwrap() <= 1e-3);
+    let w = learned["window_s"].as_f64().unwrap();
+    assert!((19e-3 - 1e-9..=20e-3 + 1e-9).contains(&w), "{learned}");
 }
 
 #[test]
@@ -139,7 +147,7 @@ fn time_scaled_captures_keep_the_calibrated_rows_clean() {
             "push-button",
             path.to_str().unwrap(),
         ]);
-        for mode in ["calibrated hold-off", "calibrated confirm"] {
+        for mode in ["calibrated hold-off", "calibrated confirm", "learned"] {
             assert_eq!(row(&r, "press", mode)["false_edges"], 0, "x{scale} {mode}");
         }
         let w = row(&r, "press", "calibrated hold-off")["window_s"]
