@@ -10,10 +10,10 @@
 //!   the switch type's bounce, or a window from a capture), and keeps it for the first
 //!   [`WARM_UP`] events of a kind.
 //! - After that it tightens to the longest bounce seen times 3/2, plus one sample. A late
-//!   burst is a different mechanism (an actuator's rebound, a stuck pair reopening) whose
-//!   scale one or two events cannot tell: once a kind has shown one, the window stays at the
-//!   prior until [`LATE_EVIDENCE`] late bursts have been seen, and then covers the longest of
-//!   them times 3/2.
+//!   burst that lasts more than [`LATE_GAP`] times the longest plain burst is a different
+//!   mechanism (an actuator's rebound) whose scale one or two events cannot tell: once a kind
+//!   has shown one, the window stays at the prior until [`LATE_EVIDENCE`] late bursts have
+//!   been seen, and then covers the longest of them times 3/2.
 //! - It never goes below the longest bounce seen plus one sample, and when a bounce outlasts
 //!   the prior, the window covers it times 3/2.
 //! - It widens at once: while the contact keeps changing, the event lasts until it has been
@@ -93,12 +93,13 @@ impl Tail {
         if seen >= prior {
             return grow(seen);
         }
-        let trusted = if self.events < WARM_UP || (self.late > 0 && self.late < LATE_EVIDENCE) {
+        // Late bursts far beyond the plain bursts are another mechanism, whose scale a few
+        // cannot tell; late bursts on the plain bursts' scale are more of the same.
+        let apart = self.late > 0 && self.late_bounce > LATE_GAP.saturating_mul(max(self.burst, 1));
+        let trusted = if self.events < WARM_UP || (apart && self.late < LATE_EVIDENCE) {
             prior
-        } else if self.late >= LATE_EVIDENCE {
-            grow(seen)
         } else {
-            grow(self.burst)
+            grow(seen)
         };
         // seen < prior <= MAX_TICKS: seen + 1 does not overflow.
         max(min(trusted, prior), seen + 1)
