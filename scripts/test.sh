@@ -120,6 +120,9 @@ if missing or not rows:
     sys.exit("README.md: the replay table differs from scripts/replay-report.sh:\n" + "\n".join(missing))
 if any(r.endswith("| NO |") for r in rows):
     sys.exit("replay: a calibrated row has false edges or is slower than a clean peer:\n" + "\n".join(rows))
+learned = [l for l in doc.splitlines() if l.startswith("| x") and l.endswith(("| yes |", "| NO |"))]
+if len(learned) != 12 or any(r.endswith("| NO |") for r in learned):
+    sys.exit("replay: the learner has more false edges than a peer, or is slower than a clean one:\n" + "\n".join(learned))
 PY
 else
   echo "SKIPPED: no ../shared/data/bouncy-button-uno.jsonl on this machine (not part of the repository)"
