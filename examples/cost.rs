@@ -7,6 +7,7 @@
 
 #[cfg(target_os = "none")]
 #[path = "common/debouncer_cost.rs"]
+#[allow(dead_code)] // `run_learner` is cost_learner's
 mod debouncers;
 
 #[cfg(target_os = "none")]

@@ -15,6 +15,7 @@ mod measured;
 
 #[cfg(target_arch = "avr")]
 #[path = "common/debouncer_cost.rs"]
+#[allow(dead_code)] // `run_learner` is uno_cost_learner's
 mod debouncers;
 
 #[cfg(target_arch = "avr")]

@@ -2,8 +2,9 @@
 # What the firmware costs: flash and RAM of every example on every target (llvm-size,
 # avr-size), instructions per tier on Cortex-M (QEMU's instruction trace between calls of
 # `cost_mark` in examples/cost.rs), exact cycles on the Arduino Uno (libsimavr, the same
-# markers in examples/uno_cost.rs), and the debouncer's per-sample cost against debouncr's.
-# Fails if ours costs more per sample than debouncr's on any target (deterministic counts).
+# markers in examples/uno_cost.rs), and the debouncers' per-sample cost against debouncr's.
+# Fails if ours costs more per sample than debouncr's on any target, or if the learner's idle
+# path (no edge in progress) costs more than twice ours (deterministic counts).
 #
 # Usage: scripts/cost-report.sh [--write]   (--write saves docs/cost-report.md)
 set -euo pipefail
@@ -41,7 +42,7 @@ declare -A qemu=(
   [thumbv7m-none-eabi]="-cpu cortex-m3 -machine lm3s6965evb"
   [thumbv7em-none-eabihf]="-cpu cortex-m4 -machine mps2-an386"
 )
-examples=(predict debounce_trace cost size_restitution size_viscous size_hereditary size_tier_closed size_tier_averaged size_tier_map size_tier_auto)
+examples=(predict debounce_trace cost cost_learner size_restitution size_viscous size_hereditary size_tier_closed size_tier_averaged size_tier_map size_tier_auto)
 for target in thumbv6m-none-eabi thumbv7m-none-eabi thumbv7em-none-eabihf; do
   cargo build --quiet --release --target "$target" $(printf -- '--example %s ' "${examples[@]}")
   for example in "${examples[@]}"; do
@@ -55,7 +56,7 @@ uno=0
 if rustup toolchain list | grep -q '^nightly'; then
   rustup component add rust-src --toolchain nightly >/dev/null 2>&1 || true
   uno=1
-  for example in uno uno_cost; do
+  for example in uno uno_learn uno_cost uno_cost_learner; do
     cargo +nightly build --quiet --release --example "$example" --target avr-none -Zbuild-std=core
     read -r text data bss _ < <(avr-size "target/avr-none/release/examples/$example.elf" | tail -n 1)
     echo "| avr-none (Uno) | $example | $text | $data | $bss |" >> "$out"
@@ -80,10 +81,11 @@ fi
   echo "## Instructions per call on Cortex-M (QEMU, tactile dome in f32)"
   echo
   echo "Instructions between consecutive calls of \`cost_mark\` in \`examples/cost.rs\` (each includes"
-  echo "the marker's few instructions). Debouncer: per sample, net of the sample loop (1000 samples)."
+  echo "the marker's few instructions). Debouncers: per sample, net of the sample loop (1000 samples of a"
+  echo "bouncing input; idle: 1000 samples of a settled contact, no edge in progress)."
   echo
-  echo "| target | validate scene | closed | averaged N4 | averaged N8 | map | auto (10 %) | debouncer (ours) | debouncr |"
-  echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|"
+  echo "| target | validate scene | closed | averaged N4 | averaged N8 | map | auto (10 %) | debouncer (ours) | debouncr | learner | idle: ours / learner |"
+  echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 } >> "$out"
 for target in thumbv6m-none-eabi thumbv7m-none-eabi thumbv7em-none-eabihf; do
   elf="target/$target/release/examples/cost"
@@ -94,12 +96,35 @@ for target in thumbv6m-none-eabi thumbv7m-none-eabi thumbv7em-none-eabihf; do
   mapfile -t c < <(awk -v mark="$mark" '{ if (match($0, /\[[0-9a-f]+\/([0-9a-f]+)\//)) { n++; if (substr($0, RSTART+10, 8) == mark) { if (last) print n - last; last = n } } }' "$tmp/trace")
   # c: validate, closed, N4, N8, map, auto, setup, ours, setup, debouncr, loop
   ours=$(( (c[7] - c[10]) )); theirs=$(( (c[9] - c[10]) ))
-  echo "| $target | ${c[0]} | ${c[1]} | ${c[2]} | ${c[3]} | ${c[4]} | ${c[5]} | $(awk "BEGIN { printf \"%.1f\", $ours / 1000 }") | $(awk "BEGIN { printf \"%.1f\", $theirs / 1000 }") |" >> "$out"
+  # The learner apart (examples/cost_learner.rs): setup, learner, ours idle, learner idle,
+  # idle loop, loop.
+  elf="target/$target/release/examples/cost_learner"
+  mark=$("$llvm_bin/llvm-nm" "$elf" | awk '$3 == "cost_mark" { print $1 }')
+  # shellcheck disable=SC2086
+  timeout 600 qemu-system-arm ${qemu[$target]} -nographic -semihosting-config enable=on,target=native \
+    -d exec,nochain -singlestep -D "$tmp/trace" -kernel "$elf"
+  mapfile -t l < <(awk -v mark="$mark" '{ if (match($0, /\[[0-9a-f]+\/([0-9a-f]+)\//)) { n++; if (substr($0, RSTART+10, 8) == mark) { if (last) print n - last; last = n } } }' "$tmp/trace")
+  learner=$(( l[1] - l[5] )); idle=$(( l[2] - l[4] )); learner_idle=$(( l[3] - l[4] ))
+  per() { awk "BEGIN { printf \"%.1f\", $1 / 1000 }"; }
+  echo "| $target | ${c[0]} | ${c[1]} | ${c[2]} | ${c[3]} | ${c[4]} | ${c[5]} | $(per $ours) | $(per $theirs) | $(per $learner) | $(per $idle) / $(per $learner_idle) |" >> "$out"
+  if [ "$learner_idle" -gt $(( 2 * idle )) ]; then
+    echo "FAIL: $target: the learner's idle path costs more than twice our debouncer's ($learner_idle > 2 x $idle per 1000)" >&2
+    failed=1
+  fi
   if [ "$ours" -gt "$theirs" ]; then
     echo "FAIL: $target: our debouncer costs more per sample than debouncr's ($ours > $theirs per 1000)" >&2
     failed=1
   fi
 done
+
+{
+  echo
+  echo "Learner: the learning debouncer (\`LearningState\`) on the same bouncing input, measured apart in"
+  echo "\`examples/cost_learner.rs\` (and \`uno_cost_learner.rs\`) so that each debouncer is inlined as a firmware"
+  echo "that uses it alone would inline it. Idle: a settled contact, the path of nearly every sample; the"
+  echo "learner's must cost at most twice ours. RAM per key: \`State\` 2 bytes, \`LearningState\` 24 bytes"
+  echo "(\`size_of\`, tested)."
+} >> "$out"
 
 if [ "$uno" = 1 ]; then
   gcc -O2 -o "$tmp/simavr-cycles" tools/simavr-cycles.c -lsimavr
@@ -108,6 +133,12 @@ if [ "$uno" = 1 ]; then
   mapfile -t c < <("$tmp/simavr-cycles" "$elf" "$mark" | grep -E '^[0-9]+$' | awk 'NR > 1 { print $1 - prev } { prev = $1 }')
   # c: validate, map walk, setup, ours, setup, debouncr, loop
   ours=$(( c[3] - c[6] )); theirs=$(( c[5] - c[6] ))
+  # The learner apart (examples/uno_cost_learner.rs): setup, learner, ours idle, learner idle,
+  # idle loop, loop.
+  elf=target/avr-none/release/examples/uno_cost_learner.elf
+  mark=$(avr-nm "$elf" | awk '$3 == "cost_mark" { print $1 }')
+  mapfile -t l < <("$tmp/simavr-cycles" "$elf" "$mark" | grep -E '^[0-9]+$' | awk 'NR > 1 { print $1 - prev } { prev = $1 }')
+  learner=$(( l[1] - l[5] )); idle=$(( l[2] - l[4] )); learner_idle=$(( l[3] - l[4] ))
   {
     echo
     echo "## Exact cycles on the Arduino Uno (libsimavr, 16 MHz, tactile dome in f32)"
@@ -116,12 +147,17 @@ if [ "$uno" = 1 ]; then
     echo "prediction, the closed tier and the averaged tier do not fit the Uno beside the rest (sizes above):"
     echo "on the Uno, walk the map with \`MapImpacts\` or fix the window at compile time."
     echo
-    echo "| validate scene | map walk + Zeno tail | debouncer (ours), per sample | debouncr, per sample |"
-    echo "|---:|---:|---:|---:|"
-    echo "| ${c[0]} | ${c[1]} ($(awk "BEGIN { printf \"%.1f\", ${c[1]} / 16000 }") ms) | $(awk "BEGIN { printf \"%.1f\", $ours / 1000 }") | $(awk "BEGIN { printf \"%.1f\", $theirs / 1000 }") |"
+    echo "| validate scene | map walk + Zeno tail | debouncer (ours), per sample | debouncr, per sample | learner, per sample | idle: ours / learner, per sample |"
+    echo "|---:|---:|---:|---:|---:|---:|"
+    per() { awk "BEGIN { printf \"%.1f\", $1 / 1000 }"; }
+    echo "| ${c[0]} | ${c[1]} ($(awk "BEGIN { printf \"%.1f\", ${c[1]} / 16000 }") ms) | $(per $ours) | $(per $theirs) | $(per $learner) | $(per $idle) / $(per $learner_idle) |"
   } >> "$out"
   if [ "$ours" -gt "$theirs" ]; then
     echo "FAIL: Uno: our debouncer costs more per sample than debouncr's ($ours > $theirs per 1000)" >&2
+    failed=1
+  fi
+  if [ "$learner_idle" -gt $(( 2 * idle )) ]; then
+    echo "FAIL: Uno: the learner's idle path costs more than twice our debouncer's ($learner_idle > 2 x $idle per 1000)" >&2
     failed=1
   fi
 fi

@@ -18,18 +18,20 @@ if ! command -v simavr >/dev/null || ! command -v avr-gcc >/dev/null; then
   DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends gcc-avr avr-libc simavr >/dev/null
 fi
 
-cargo +nightly build --quiet --release --example uno --target avr-none -Zbuild-std=core
-elf=target/avr-none/release/examples/uno.elf
-avr-size "$elf"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-cargo run --quiet --example uno > "$tmp/host"
-# simavr prints the UART in colour, one line at a time ending in '.', then its own lines; it
-# never stops on a bad opcode, hence the timeout.
-timeout 120 simavr -m atmega328p -f 16000000 "$elf" > "$tmp/raw" 2>&1 || true
-sed -e 's/\x1b\[[0-9;]*m//g' "$tmp/raw" | grep -v -e '^Loaded ' -e '^$' | sed -e 's/\.$//' > "$tmp/uno"
-if grep -q PANIC "$tmp/uno" || ! diff -u "$tmp/host" "$tmp/uno"; then
-  echo "FAIL: the Uno printed other lines than the host" >&2
-  exit 1
-fi
-echo "ok: uno in simavr ($(wc -l < "$tmp/host") lines, as on the host)"
+for example in uno uno_learn; do
+  cargo +nightly build --quiet --release --example "$example" --target avr-none -Zbuild-std=core
+  elf=target/avr-none/release/examples/$example.elf
+  avr-size "$elf"
+  cargo run --quiet --example "$example" > "$tmp/host"
+  # simavr prints the UART in colour, one line at a time ending in '.', then its own lines; it
+  # never stops on a bad opcode, hence the timeout.
+  timeout 300 simavr -m atmega328p -f 16000000 "$elf" > "$tmp/raw" 2>&1 || true
+  sed -e 's/\x1b\[[0-9;]*m//g' "$tmp/raw" | grep -v -e '^Loaded ' -e '^$' | sed -e 's/\.$//' > "$tmp/uno"
+  if grep -q PANIC "$tmp/uno" || ! diff -u "$tmp/host" "$tmp/uno"; then
+    echo "FAIL: $example on the Uno printed other lines than the host" >&2
+    exit 1
+  fi
+  echo "ok: $example in simavr ($(wc -l < "$tmp/host") lines, as on the host)"
+done

@@ -214,6 +214,7 @@ const LEVEL: u8 = 1;
 const RAW: u8 = 2;
 const ACTIVE: u8 = 4;
 const LATE: u8 = 8;
+const RECENT: u8 = 16;
 
 /// One key's learning debouncer state (see the module docs): what it learned and the event in
 /// progress. 24 bytes; integer-only per sample.
@@ -240,7 +241,8 @@ const LATE: u8 = 8;
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct LearningState {
     learned: Learned,
-    /// Samples since the event's edge (saturating).
+    /// Samples since the event's edge (saturating; no longer counted once the event has been
+    /// over for a quiet interval).
     since: u16,
     /// When the event's last change was seen.
     last: u16,
@@ -248,10 +250,11 @@ pub struct LearningState {
     burst_end: u16,
     /// When it ends, unless the contact keeps changing.
     guard: u16,
-    /// Samples from the previous event's edge to the current one's.
+    /// Samples from the previous event's edge to the current one's (counted up to one quiet
+    /// interval past its watch: a lower bound beyond).
     previous_span: u16,
     /// LEVEL (debounced closed), RAW (last sample closed), ACTIVE (an event in progress),
-    /// LATE (it has a late burst).
+    /// LATE (it has a late burst), RECENT (an event ended less than a quiet interval ago).
     flags: u8,
 }
 
@@ -321,7 +324,22 @@ impl LearningState {
     /// Feeds one sample (`true`: the contact reads closed) with the caller's prior windows in
     /// samples (the mode of `prior` is not used: this learner always reports at once); returns
     /// the edge it debounces, if any.
+    // Always inlined: the idle path is the cost of nearly every sample, a few instructions
+    // inline (docs/cost-report.md) where a call would cost more than the path.
+    #[allow(clippy::inline_always)]
+    #[inline(always)]
     pub fn update(&mut self, closed: bool, prior: &Windows) -> Option<Edge> {
+        // The idle path, inlined and read-only: settled long enough ago, and the sample reads
+        // the level (as the last one did).
+        if self.flags & (ACTIVE | RECENT) == 0 && closed == self.is_closed() {
+            return None;
+        }
+        self.watch(closed, *prior)
+    }
+
+    /// [`LearningState::update`] while an edge is in progress or starts.
+    #[inline(never)]
+    fn watch(&mut self, closed: bool, prior: Windows) -> Option<Edge> {
         let changed = closed != (self.flags & RAW != 0);
         self.flags = if closed {
             self.flags | RAW
@@ -353,10 +371,18 @@ impl LearningState {
                 &mut self.learned.release
             };
             tail.record(min(self.last, Windows::MAX_TICKS), late);
-            self.flags &= !(ACTIVE | LATE);
+            self.flags = (self.flags & !(ACTIVE | LATE)) | RECENT;
             // This sample may already show the next change: fall through.
         } else {
             self.since = self.since.saturating_add(1);
+        }
+        // Until one quiet interval after the watch, a change is that event's late bounce
+        // (below); after it, the idle path needs no count.
+        let quiet = LATE_GAP.saturating_mul(max(self.burst_end, 1));
+        let recent = self.flags & RECENT != 0 && self.since <= self.guard.saturating_add(quiet);
+        if !recent {
+            // No longer counted: `since` stays a lower bound of the time since the edge.
+            self.flags &= !RECENT;
         }
         if closed == self.is_closed() {
             return None;
@@ -366,8 +392,7 @@ impl LearningState {
         // this edge's kind), which lasted at least until now. Counted up to the prior only: a
         // genuine quick double tap looks the same and must not ratchet the window up; it only
         // sends it back to the prior.
-        let quiet = LATE_GAP.saturating_mul(max(self.burst_end, 1));
-        if self.since <= self.guard.saturating_add(quiet) {
+        if recent {
             let (tail, cap) = if closed {
                 (&mut self.learned.press, prior.press())
             } else {
@@ -379,7 +404,7 @@ impl LearningState {
             }
             tail.late_bounce = max(tail.late_bounce, bounce);
         }
-        let (press, release) = self.learned.windows(prior);
+        let (press, release) = self.learned.windows(&prior);
         let (edge, window) = if closed {
             (Edge::Press, press)
         } else {

@@ -1,9 +1,11 @@
 // The debouncers' share of the cost examples (cost.rs under QEMU, uno_cost*.rs in simavr):
 // 1000 samples of the same pseudo-random input through our debouncer, through debouncr's
 // 16-sample debouncer, and through the sample loop alone (subtracted by the report), marked
-// `first` .. `first + 4`.
+// `first` .. `first + 4` (`run`); then the learning debouncer on the same input, and the
+// idle path, 1000 samples of a settled open contact, through our debouncer, the learner and
+// the loop alone (`run_learner`).
 
-use contact_bounce::{Mode, State, Windows};
+use contact_bounce::{LearningState, Mode, State, Windows};
 use core::hint::black_box;
 
 /// 1000 samples of a bouncing input (a 32-bit xorshift, biased to runs).
@@ -37,4 +39,41 @@ pub fn run(mark: impl Fn(u8), first: u8) {
         black_box(s);
     }
     mark(first + 4);
+}
+
+/// The learning debouncer on the same input, then the idle path (a settled open contact)
+/// through our debouncer, the learner and the loop alone, and the bouncing input's loop alone,
+/// marked `first` .. `first + 5`.
+#[inline(always)]
+pub fn run_learner(mark: impl Fn(u8), first: u8) {
+    if let Ok(prior) = Windows::new(black_box(12), black_box(12), Mode::HoldOff) {
+        let mut key = LearningState::new(false);
+        mark(first);
+        for s in samples(black_box(0x1234_5678)) {
+            black_box(key.update(black_box(s), &prior));
+        }
+        mark(first + 1);
+        // The idle path: settled, no edge in progress.
+        if let Ok(windows) = Windows::new(black_box(12), black_box(12), Mode::Confirm) {
+            let mut state = State::new(false);
+            for _ in 0..1000 {
+                black_box(state.update(black_box(false), &windows));
+            }
+        }
+        mark(first + 2);
+        let mut key = LearningState::new(false);
+        for _ in 0..1000 {
+            black_box(key.update(black_box(false), &prior));
+        }
+        mark(first + 3);
+        for _ in 0..1000 {
+            black_box(black_box(false));
+        }
+        mark(first + 4);
+        // The bouncing input's loop alone, for the learner's net cost.
+        for s in samples(black_box(0x1234_5678)) {
+            black_box(s);
+        }
+        mark(first + 5);
+    }
 }

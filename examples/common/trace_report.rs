@@ -2,7 +2,7 @@
 
 #[path = "../data/relay_press.rs"]
 #[allow(dead_code)]
-mod data;
+pub mod data;
 
 use contact_bounce::{
     catalogue, Debouncer, Margin, Method, Mode, Polarity, Tolerance, Window, Windows,
