@@ -101,3 +101,41 @@ fn pin_errors_pass_through_and_leave_the_state_alone() {
     let _ = button.free();
     pin.done();
 }
+
+#[test]
+fn the_learning_debouncer_passes_pin_errors_through_and_restores_what_it_learned() {
+    use contact_bounce::{Learned, LearningDebouncer, Tail};
+    let expectations = [
+        Transaction::get(Level::High),
+        Transaction::get(Level::Low).with_error(MockError::Io(std::io::ErrorKind::Other)),
+        Transaction::get(Level::Low),
+        Transaction::get(Level::High),
+    ];
+    let mut pin = Mock::new(&expectations);
+    // Restored with 12 presses learned at 2 samples of bounce: a press window of 4 samples.
+    let learned = Learned {
+        press: Tail {
+            events: 12,
+            late: 0,
+            burst: 2,
+            late_bounce: 0,
+        },
+        release: Tail::default(),
+    };
+    let prior = windows(50, 50, Mode::HoldOff);
+    let mut button =
+        LearningDebouncer::restore(pin.clone(), prior, Polarity::ActiveLow, learned).expect("pin");
+    assert_eq!(button.windows(), (4, 50));
+    let before = button.learned();
+    let err = button.update().expect_err("the mock fails");
+    assert_eq!(embedded_hal::digital::Error::kind(&err), ErrorKind::Other);
+    assert_eq!(button.learned(), before);
+    assert!(!button.is_closed());
+    // The failed sample is skipped: the next reads the press at once, the bounce after it is
+    // inside the window.
+    assert_eq!(button.update().expect("pin"), Some(Edge::Press));
+    assert_eq!(button.update().expect("pin"), None);
+    assert!(button.is_closed());
+    let _ = button.free();
+    pin.done();
+}
