@@ -9,13 +9,14 @@
 //! - The window starts at a prior, given by the caller in samples (for example the P99.9 of
 //!   the switch type's bounce, or a window from a capture), and keeps it for the first
 //!   [`WARM_UP`] events of a kind.
-//! - After that it tightens to the longest bounce seen times 3/2, plus one sample. A late
+//! - After that it tightens to 3/2 of the longest bounce seen (`m + (m - 1) / 2` samples for
+//!   `m` seen: at most 3/2 of the bounce plus one sample, whatever the sampling phase). A late
 //!   burst that lasts more than [`LATE_GAP`] times the longest plain burst is a different
 //!   mechanism (an actuator's rebound) whose scale one or two events cannot tell: once a kind
 //!   has shown one, the window stays at the prior until [`LATE_EVIDENCE`] late bursts have
 //!   been seen, and then covers the longest of them times 3/2.
-//! - It never goes below the longest bounce seen plus one sample, and when a bounce outlasts
-//!   the prior, the window covers it times 3/2.
+//! - It never goes below the longest bounce seen, and when a bounce outlasts the prior, the
+//!   window covers it times 3/2.
 //! - It widens at once: while the contact keeps changing, the event lasts until it has been
 //!   quiet for [`LATE_GAP`] times its first burst (at least [`LATE_GAP`] samples) past the
 //!   window; and when a bounce comes after that (the edge it gives is false), the contact
@@ -54,13 +55,15 @@ pub struct Tail {
     pub late_bounce: u16,
 }
 
-/// The window `m` samples of bounce ask for: 3/2 of it plus one sample, at most
-/// [`Windows::MAX_TICKS`].
+/// The window `m` samples of bounce ask for: `m + (m - 1) / 2` (one sample for none), at most
+/// [`Windows::MAX_TICKS`]. A bounce seen over `m` samples lasted more than `m - 1` sampling
+/// periods (its first and last change each fall anywhere in a sample), so this is at most 3/2
+/// of the bounce plus one sample, and never less than what was seen.
 const fn grow(m: u16) -> u16 {
-    min(
-        m.saturating_add(m / 2).saturating_add(1),
-        Windows::MAX_TICKS,
-    )
+    if m == 0 {
+        return 1;
+    }
+    min(m.saturating_add((m - 1) / 2), Windows::MAX_TICKS)
 }
 
 const fn max(a: u16, b: u16) -> u16 {
@@ -101,8 +104,9 @@ impl Tail {
         } else {
             grow(seen)
         };
-        // seen < prior <= MAX_TICKS: seen + 1 does not overflow.
-        max(min(trusted, prior), seen + 1)
+        // Never below what was seen (a watch of `seen` samples covers a change seen at `seen`),
+        // nor below one sample.
+        max(min(trusted, prior), max(seen, 1))
     }
 
     const fn from_bytes(b: [u8; 6]) -> Self {
@@ -233,8 +237,8 @@ const RECENT: u8 = 16;
 ///     let edges: Vec<_> = release.iter().filter_map(|&s| key.update(s, &prior)).collect();
 ///     assert_eq!(edges, [Edge::Release]);
 /// }
-/// // Ten presses in, the press window is 2 * 3/2 + 1 = 4 samples, not the prior's 8.
-/// assert_eq!(key.learned().windows(&prior), (4, 1));
+/// // Ten presses in, the press window is 2 + (2 - 1) / 2 = 2 samples, not the prior's 8.
+/// assert_eq!(key.learned().windows(&prior), (2, 1));
 /// # Ok::<(), contact_bounce::Error>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -549,8 +553,8 @@ mod tests {
             if n < WARM_UP {
                 assert_eq!((press, release), (50, 50), "event {n}");
             } else {
-                // 5 samples of bounce: 5 + 2 + 1.
-                assert_eq!((press, release), (8, 1), "event {n}");
+                // 5 samples of bounce: 5 + (5 - 1) / 2.
+                assert_eq!((press, release), (7, 1), "event {n}");
             }
         }
         assert_eq!(key.learned().press.burst, 5);
@@ -577,7 +581,7 @@ mod tests {
         for _ in 0..WARM_UP {
             cycle(&mut key, p, &plain, 200);
         }
-        assert_eq!(key.learned().windows(&p).0, 4);
+        assert_eq!(key.learned().windows(&p).0, 2);
         // A burst after 30 quiet samples: a late burst (quiet >= 4 x the first burst).
         let mut late = [true; 40];
         late[1] = false;
@@ -593,10 +597,10 @@ mod tests {
         assert_eq!(key.learned().windows(&p).0, 100);
         assert_eq!(cycle(&mut key, p, &late, 200)[0], 1);
         // Three seen: 3/2 of the longest late bounce (its last change, back to closed, at
-        // sample 35) plus one.
+        // sample 35).
         assert_eq!(key.learned().press.late, LATE_EVIDENCE);
         assert_eq!(key.learned().press.late_bounce, 35);
-        assert_eq!(key.learned().windows(&p).0, 35 + 17 + 1);
+        assert_eq!(key.learned().windows(&p).0, 35 + 17);
         assert_eq!(cycle(&mut key, p, &late, 200)[0], 1);
     }
 

@@ -112,12 +112,12 @@ fn the_learning_debouncer_passes_pin_errors_through_and_restores_what_it_learned
         Transaction::get(Level::High),
     ];
     let mut pin = Mock::new(&expectations);
-    // Restored with 12 presses learned at 2 samples of bounce: a press window of 4 samples.
+    // Restored with 12 presses learned at 4 samples of bounce: a press window of 4 + 3 / 2.
     let learned = Learned {
         press: Tail {
             events: 12,
             late: 0,
-            burst: 2,
+            burst: 4,
             late_bounce: 0,
         },
         release: Tail::default(),
@@ -125,7 +125,7 @@ fn the_learning_debouncer_passes_pin_errors_through_and_restores_what_it_learned
     let prior = windows(50, 50, Mode::HoldOff);
     let mut button =
         LearningDebouncer::restore(pin.clone(), prior, Polarity::ActiveLow, learned).expect("pin");
-    assert_eq!(button.windows(), (4, 50));
+    assert_eq!(button.windows(), (5, 50));
     let before = button.learned();
     let err = button.update().expect_err("the mock fails");
     assert_eq!(embedded_hal::digital::Error::kind(&err), ErrorKind::Other);
