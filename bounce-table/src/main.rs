@@ -13,6 +13,34 @@ use bounce_table::output::{identifier, render, Format};
 use bounce_table::scenes::{catalogue, read, FileError};
 use bounce_table::{calibrate, eval, plot, replay, scene_input::SceneInput};
 
+/// Writes to standard output. A reader that stopped early (`bounce-table ... | head`) ends the
+/// run quietly with success, as it does for other command-line tools; any other failure to
+/// write is an error (exit status 1), never a panic.
+fn emit(text: &str) {
+    use std::io::Write;
+    let mut stdout = std::io::stdout().lock();
+    if let Err(e) = stdout
+        .write_all(text.as_bytes())
+        .and_then(|()| stdout.flush())
+    {
+        if e.kind() == std::io::ErrorKind::BrokenPipe {
+            std::process::exit(0);
+        }
+        eprintln!("bounce-table: standard output: {e}");
+        std::process::exit(1);
+    }
+}
+
+/// `print!` through [`emit`].
+macro_rules! out {
+    ($($arg:tt)*) => { emit(&format!($($arg)*)) };
+}
+
+/// `println!` through [`emit`].
+macro_rules! outln {
+    ($($arg:tt)*) => { emit(&format!("{}\n", format!($($arg)*))) };
+}
+
 const USAGE: &str = "usage: bounce-table [OPTIONS] [SCENE_FILE]
        bounce-table eval [--method exact|map|averaged|closed|auto] [--tolerance X]
                          [--precision f32|f64] [--nodes N] < scenes.jsonl
@@ -179,7 +207,7 @@ fn replay_main(args: &[String]) -> ExitCode {
     if request.output == replay::Output::Curve {
         return match replay::learning_curves(&events, &request.settings) {
             Ok(curves) => {
-                print!("{}", replay::curve_csv(&curves));
+                out!("{}", replay::curve_csv(&curves));
                 ExitCode::SUCCESS
             }
             Err(e) => {
@@ -218,13 +246,13 @@ fn replay_main(args: &[String]) -> ExitCode {
         }
     }
     match request.output {
-        replay::Output::Json => print!("{}", replay::json(&lines)),
+        replay::Output::Json => out!("{}", replay::json(&lines)),
         replay::Output::Curve => {}
         replay::Output::Markdown => {
             if skipped.total() > 0 {
-                println!("{}\n", skipped.describe(request.capture.quiet));
+                outln!("{}\n", skipped.describe(request.capture.quiet));
             }
-            print!("{}", replay::markdown(&lines));
+            out!("{}", replay::markdown(&lines));
         }
     }
     ExitCode::SUCCESS
@@ -263,7 +291,7 @@ fn main() -> ExitCode {
         return match calibrate::load(&options) {
             Ok((events, skipped)) => {
                 if options.events {
-                    print!(
+                    out!(
                         "{}",
                         calibrate::events_csv(&events, options.resolution, options.burst_gap)
                     );
@@ -271,7 +299,7 @@ fn main() -> ExitCode {
                 }
                 let groups = calibrate::group(&events, options.resolution, options.burst_gap);
                 if let Some(rust) = options.export {
-                    print!("{}", calibrate::export(&groups, options.percentile, rust));
+                    out!("{}", calibrate::export(&groups, options.percentile, rust));
                     return ExitCode::SUCCESS;
                 }
                 if let Some(dir) = &options.plot {
@@ -290,23 +318,23 @@ fn main() -> ExitCode {
                         }
                     }
                 }
-                println!(
+                outln!(
                     "# Summary\n\n{}",
                     calibrate::summary(&groups, options.percentile, options.burst_gap)
                 );
-                print!(
+                out!(
                     "## Description\n\n{}",
                     calibrate::describe(&groups, options.resolution)
                 );
                 if skipped.total() > 0 {
-                    println!("\n{}", skipped.describe(options.quiet));
+                    outln!("\n{}", skipped.describe(options.quiet));
                 }
-                print!(
+                out!(
                     "{}",
                     calibrate::assess(&groups, options.percentile, options.seed)
                 );
                 if options.contact_models {
-                    print!("{}", calibrate::contact::report(&groups, options.seed));
+                    out!("{}", calibrate::contact::report(&groups, options.seed));
                 }
                 ExitCode::SUCCESS
             }
@@ -319,7 +347,7 @@ fn main() -> ExitCode {
     let options = match parse(&args) {
         Ok(o) => o,
         Err(message) if message.is_empty() => {
-            println!("{USAGE}");
+            outln!("{USAGE}");
             return ExitCode::SUCCESS;
         }
         Err(message) => {
@@ -373,7 +401,7 @@ fn main() -> ExitCode {
                 return ExitCode::FAILURE;
             }
         }
-        None => print!("{text}"),
+        None => out!("{text}"),
     }
     if let Some(dir) = &options.plot {
         if let Err(e) = std::fs::create_dir_all(dir) {

@@ -271,3 +271,30 @@ fn bad_input_names_the_file_the_entry_and_the_field_and_writes_nothing() {
         assert_eq!(run(args).status.code(), Some(2), "{args:?}");
     }
 }
+
+#[test]
+fn a_reader_that_stops_early_ends_the_run_quietly() {
+    use std::io::{BufRead, BufReader};
+    use std::process::{Command, Stdio};
+    // 20,000 presses: their CSV is far more than a pipe holds, so the writer meets the closed
+    // pipe (`bounce-table calibrate --events big.jsonl | head -1`).
+    let path = tmp("big.jsonl");
+    let line = "{\"dataset\":\"big\",\"test\":1,\"kind\":\"press\",\"section\":\"Normal\",\"section_invalid\":false,\"events\":[[0,1],[100,0],[5000,1],[9000,0]]}\n";
+    std::fs::write(&path, line.repeat(20_000)).expect("write");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_bounce-table"))
+        .args(["calibrate", "--events", path.to_str().expect("utf8")])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("spawn");
+    let mut first = String::new();
+    BufReader::new(child.stdout.take().expect("stdout"))
+        .read_line(&mut first)
+        .expect("a line");
+    assert!(first.starts_with("switch,"), "{first}");
+    // The reader is gone (its end of the pipe dropped above).
+    let out = child.wait_with_output().expect("wait");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{:?}: {stderr}", out.status);
+    assert!(!stderr.contains("panicked"), "{stderr}");
+}
