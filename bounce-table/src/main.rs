@@ -9,7 +9,7 @@
 use std::process::ExitCode;
 
 use bounce_table::analysis::{analyse, Settings};
-use bounce_table::output::{identifier, render, Format};
+use bounce_table::output::{clash, identifier, render, Format};
 use bounce_table::scenes::{catalogue, read, FileError};
 use bounce_table::{calibrate, eval, plot, replay, scene_input::SceneInput};
 
@@ -182,10 +182,12 @@ fn parse(args: &[String]) -> Result<Options, String> {
 fn write_atomically(path: &str, text: &str) -> std::io::Result<()> {
     let target = std::path::Path::new(path);
     let tmp = target.with_extension(format!("tmp-{}", std::process::id()));
-    std::fs::write(&tmp, text)?;
-    std::fs::rename(&tmp, target).inspect_err(|_| {
-        let _ = std::fs::remove_file(&tmp);
-    })
+    // A failed write (a full disk) or rename leaves no temporary file behind.
+    std::fs::write(&tmp, text)
+        .and_then(|()| std::fs::rename(&tmp, target))
+        .inspect_err(|_| {
+            let _ = std::fs::remove_file(&tmp);
+        })
 }
 
 /// `bounce-table replay`.
@@ -299,6 +301,17 @@ fn main() -> ExitCode {
                 }
                 let groups = calibrate::group(&events, options.resolution, options.burst_gap);
                 if let Some(rust) = options.export {
+                    let names: Vec<String> = groups
+                        .keys()
+                        .map(|(switch, kind)| format!("{switch} {}", kind.name()))
+                        .collect();
+                    if let Some((a, b, id)) = clash(names.iter().map(String::as_str)) {
+                        eprintln!(
+                            "bounce-table calibrate: {}: '{a}' and '{b}' both become {id} in generated code: rename a switch",
+                            options.file
+                        );
+                        return ExitCode::from(2);
+                    }
                     out!("{}", calibrate::export(&groups, options.percentile, rust));
                     return ExitCode::SUCCESS;
                 }
@@ -392,6 +405,24 @@ fn main() -> ExitCode {
     if failed {
         // Nothing is written when any switch failed.
         return ExitCode::from(2);
+    }
+    if matches!(options.format, Format::C | Format::Rust) {
+        if let Some((a, b, id)) = clash(analyses.iter().map(|a| a.name.as_str())) {
+            eprintln!(
+                "bounce-table: {source}: switches '{a}' and '{b}' both become {id} in generated code: rename one"
+            );
+            return ExitCode::from(2);
+        }
+    }
+    if let (Some(input), Some(output)) = (&options.file, &options.output) {
+        let same = std::fs::canonicalize(input)
+            .ok()
+            .zip(std::fs::canonicalize(output).ok())
+            .is_some_and(|(a, b)| a == b);
+        if same {
+            eprintln!("bounce-table: --output {output} is the scene file itself: refusing to overwrite it");
+            return ExitCode::from(2);
+        }
     }
     let text = render(options.format, &analyses, &options.settings, typical);
     match &options.output {

@@ -298,3 +298,61 @@ fn a_reader_that_stops_early_ends_the_run_quietly() {
     assert!(out.status.success(), "{:?}: {stderr}", out.status);
     assert!(!stderr.contains("panicked"), "{stderr}");
 }
+
+/// A JSON scene file of switches with these names (the tactile dome's parameters).
+fn named(file: &str, names: &[&str]) -> std::path::PathBuf {
+    let switches: Vec<serde_json::Value> = names
+        .iter()
+        .map(|n| {
+            serde_json::json!({"name": n, "mass": 5e-5, "stiffness": 5000.0, "preload_force": 1.0,
+                "restitution": 0.7, "damping_ratio": 0.03, "closing_speed": 0.5})
+        })
+        .collect();
+    let path = tmp(file);
+    std::fs::write(&path, serde_json::Value::Array(switches).to_string()).expect("write");
+    path
+}
+
+#[test]
+fn generated_code_refuses_names_that_clash_and_keeps_names_in_comments() {
+    let path = named("clash.json", &["relay A", "relay-a"]);
+    for format in ["c", "rust"] {
+        let out = run(&["--format", format, path.to_str().expect("utf8")]);
+        assert_eq!(out.status.code(), Some(2), "{format}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            err.contains("'relay A' and 'relay-a' both become RELAY_A"),
+            "{err}"
+        );
+        assert!(out.stdout.is_empty());
+    }
+    // The table has no identifiers: it is fine.
+    assert!(run(&[path.to_str().expect("utf8")]).status.success());
+    // A newline in a name stays inside the comment: no injected line of code.
+    let path = named(
+        "inject.json",
+        &["x\npub const EVIL: u32 = 1;", "y */ int evil; /*"],
+    );
+    for format in ["c", "rust"] {
+        let out = run(&["--format", format, path.to_str().expect("utf8")]);
+        assert!(out.status.success(), "{format}");
+        let text = String::from_utf8(out.stdout).expect("utf8");
+        assert!(
+            !text
+                .lines()
+                .any(|l| l.starts_with("pub const EVIL") || l.contains("*/ int evil")),
+            "{text}"
+        );
+    }
+}
+
+#[test]
+fn the_output_may_not_be_the_scene_file_itself() {
+    let path = named("self.json", &["switch"]);
+    let before = std::fs::read(&path).expect("read");
+    let p = path.to_str().expect("utf8");
+    let out = run(&["--format", "json", "--output", p, p]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("refusing to overwrite"));
+    assert_eq!(std::fs::read(&path).expect("read"), before);
+}
