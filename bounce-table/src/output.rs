@@ -224,8 +224,8 @@ pub fn render(format: Format, analyses: &[Analysis], settings: &Settings, typica
             let widths: Vec<usize> = (0..8)
                 .map(|i| {
                     rows.iter()
-                        .map(|r| r[i].len())
-                        .chain([HEADERS[i].len()])
+                        .map(|r| r[i].chars().count())
+                        .chain([HEADERS[i].chars().count()])
                         .max()
                         .unwrap_or(0)
                 })
@@ -234,7 +234,9 @@ pub fn render(format: Format, analyses: &[Analysis], settings: &Settings, typica
                 cells
                     .iter()
                     .zip(&widths)
-                    .map(|(c, w)| format!("{c:<w$}"))
+                    // Padded by hand: a width in a format string is limited to 65,535, and a
+                    // switch's name is not.
+                    .map(|(c, w)| format!("{c}{}", " ".repeat(w.saturating_sub(c.chars().count()))))
                     .collect::<Vec<_>>()
                     .join("  ")
             };

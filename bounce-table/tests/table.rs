@@ -356,3 +356,16 @@ fn the_output_may_not_be_the_scene_file_itself() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("refusing to overwrite"));
     assert_eq!(std::fs::read(&path).expect("read"), before);
 }
+
+#[test]
+fn a_very_long_name_is_laid_out_not_a_panic() {
+    let long = "x".repeat(100_000);
+    let path = named("long.json", &[long.as_str()]);
+    let out = run(&[path.to_str().expect("utf8")]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(String::from_utf8_lossy(&out.stdout).contains(&long));
+}
