@@ -412,6 +412,13 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
             derived(q * q, Parameter::Delta)?;
             derived(omega * omega * delta.abs(), Parameter::Delta)?;
             derived(omega * q * q, Parameter::Delta)?;
+            // The dimensionless closing speed j0 = v0 / (Omega |Delta|), which every tier forms
+            // (the undamped sums start from it): a scene whose j0 overflows the float in use
+            // has no flight the float can describe (and its sums would never shrink from inf).
+            derived(
+                F::TWO * restitution * closing_speed / (omega * delta.abs()),
+                Parameter::ClosingSpeed,
+            )?;
         }
         let zeta = dissipation.damping_ratio();
         check_domain(contact.restitution, restitution, loss, zeta)?;

@@ -99,3 +99,37 @@ fn every_tier_is_sane_over_the_extremes_in_f64() {
 fn every_tier_is_sane_over_the_extremes_in_f32() {
     assert!(sweep::<f32>() > 20_000);
 }
+
+#[test]
+fn a_closing_speed_whose_j0_overflows_the_float_is_refused_not_a_hang() {
+    // The fuzzing harness's hang: j0 = 2 R v0 / (Omega |Delta|) = 1e42 overflows f32, and the
+    // undamped sum started from inf and never shrank. Refused in f32, fine in f64.
+    fn scene<F: Float>() -> Result<Scene<F, Viscous<F>>, contact_bounce::Error> {
+        Scene::new(
+            Contact {
+                frequency: Frequency::Omega(F::from_f64(1e5)),
+                offset: Offset::Delta(F::from_f64(-1e-20)),
+                restitution: Restitution::Coefficient(F::from_f64(0.5)),
+                closing_speed: F::from_f64(1e27),
+                threshold: Threshold::None,
+            },
+            Viscous::new(F::ZERO)?,
+        )
+    }
+    assert_eq!(
+        scene::<f32>().map(|_| ()),
+        Err(contact_bounce::Error::new(
+            contact_bounce::Parameter::ClosingSpeed,
+            contact_bounce::Reason::Overflow
+        ))
+    );
+    let s = scene::<f64>().expect("f64 holds j0 = 1e42");
+    for method in [
+        Method::Closed,
+        Method::Auto(Tolerance::new(0.01).expect("valid")),
+    ] {
+        let p = s.predict(method);
+        sane(&p, "j0 1e42");
+        assert!(matches!(p.end_time, Time::At(t) if t > 0.0));
+    }
+}
