@@ -92,6 +92,8 @@ impl Window {
         let covered = margin.factor * seconds + margin.extra;
         (covered / period)
             .ceil_u32()
+            // A positive time whose ratio to the period underflows still needs one tick.
+            .map(|t| if t == 0 && covered > F::ZERO { 1 } else { t })
             .map(Self::from_ticks)
             .ok_or(Error::new(Parameter::SamplePeriod, Reason::Overflow))
     }
@@ -237,6 +239,10 @@ pub const fn window_ticks(seconds: f64, factor: f64, sample_period: f64) -> Resu
     if ticks.is_nan() || ticks > 4_294_967_295.0 {
         return Err(Error::new(Parameter::SamplePeriod, Reason::Overflow));
     }
+    // A positive time (checked above) whose ratio to the period underflows: one tick, never 0.
+    if ticks == 0.0 {
+        return Ok(1);
+    }
     // In range (checked above), so the conversions are exact or truncate toward zero.
     #[allow(
         clippy::cast_possible_truncation,
@@ -252,5 +258,23 @@ pub const fn window_ticks(seconds: f64, factor: f64, sample_period: f64) -> Resu
         Ok(whole + 1)
     } else {
         Ok(whole)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_positive_time_is_never_zero_ticks() {
+        // The fuzzing harness's silent wrong number: 1e-300 s at 1e100 s a tick underflowed to
+        // Ok(0), a window that covers nothing.
+        assert_eq!(window_ticks(1e-300, 1.0, 1e100), Ok(1));
+        let w = Window::from_seconds(1e-300_f64, &Margin::none(), 1e100);
+        assert_eq!(w.map(|w| w.ticks()), Ok(1));
+        // Zero time stays zero ticks where it is allowed.
+        let w = Window::from_seconds(0.0_f64, &Margin::none(), 1e-3);
+        assert_eq!(w.map(|w| w.ticks()), Ok(0));
+        assert_eq!(window_ticks(1.2e-3, 1.5, 0.5e-3), Ok(4));
     }
 }
