@@ -121,6 +121,16 @@ impl Window {
     }
 }
 
+/// [`check`], and within [`crate::PHYSICAL_RANGE`] (as `Scene::new` asks of dimensional inputs).
+const fn physical(value: f64, parameter: Parameter) -> Result<f64, Error> {
+    match check(value, parameter) {
+        Ok(v) if v < crate::PHYSICAL_RANGE.0 || v > crate::PHYSICAL_RANGE.1 => {
+            Err(Error::new(parameter, Reason::OutOfRange))
+        }
+        other => other,
+    }
+}
+
 const fn check(value: f64, parameter: Parameter) -> Result<f64, Error> {
     if value.is_nan() {
         Err(Error::new(parameter, Reason::NotANumber))
@@ -159,7 +169,9 @@ pub struct LeadingOrder {
 /// ```
 ///
 /// # Errors
-/// The offending parameter when NaN, infinite or not positive, or R >= 1.
+/// The offending parameter when NaN, infinite or not positive, outside
+/// [`crate::PHYSICAL_RANGE`], or R outside [`crate::SMALLEST_RESTITUTION`] to 1 -
+/// [`crate::SMALLEST_RATE`]: the inputs `Scene::new` refuses.
 pub const fn preload_bounce_time(
     mass: f64,
     stiffness: f64,
@@ -167,19 +179,21 @@ pub const fn preload_bounce_time(
     closing_speed: f64,
     restitution: f64,
 ) -> Result<LeadingOrder, Error> {
-    let mass = match check(mass, Parameter::Mass) {
+    // The same domain `Scene::new` takes: dimensional inputs within PHYSICAL_RANGE, R from
+    // SMALLEST_RESTITUTION to 1 - SMALLEST_RATE.
+    let mass = match physical(mass, Parameter::Mass) {
         Ok(v) => v,
         Err(e) => return Err(e),
     };
-    let stiffness = match check(stiffness, Parameter::Stiffness) {
+    let stiffness = match physical(stiffness, Parameter::Stiffness) {
         Ok(v) => v,
         Err(e) => return Err(e),
     };
-    let force = match check(preload_force, Parameter::PreloadForce) {
+    let force = match physical(preload_force, Parameter::PreloadForce) {
         Ok(v) => v,
         Err(e) => return Err(e),
     };
-    let speed = match check(closing_speed, Parameter::ClosingSpeed) {
+    let speed = match physical(closing_speed, Parameter::ClosingSpeed) {
         Ok(v) => v,
         Err(e) => return Err(e),
     };
@@ -187,7 +201,10 @@ pub const fn preload_bounce_time(
         Ok(v) => v,
         Err(e) => return Err(e),
     };
-    if restitution >= 1.0 {
+    if restitution >= 1.0
+        || restitution < crate::scene::SMALLEST_RESTITUTION
+        || 1.0 - restitution < crate::scene::SMALLEST_RATE
+    {
         return Err(Error::new(Parameter::Restitution, Reason::OutOfRange));
     }
     let start = 2.0 * restitution * speed;
@@ -276,5 +293,27 @@ mod tests {
         let w = Window::from_seconds(0.0_f64, &Margin::none(), 1e-3);
         assert_eq!(w.map(|w| w.ticks()), Ok(0));
         assert_eq!(window_ticks(1.2e-3, 1.5, 0.5e-3), Ok(4));
+    }
+
+    #[test]
+    fn the_compile_time_bounce_refuses_what_scene_new_refuses() {
+        let out = |p| Err(Error::new(p, Reason::OutOfRange));
+        assert_eq!(
+            preload_bounce_time(1e-40, 5000.0, 1.0, 0.5, 0.7),
+            out(Parameter::Mass)
+        );
+        assert_eq!(
+            preload_bounce_time(5e-5, 5000.0, 1.0, 1e31, 0.7),
+            out(Parameter::ClosingSpeed)
+        );
+        assert_eq!(
+            preload_bounce_time(5e-5, 5000.0, 1.0, 0.5, 1e-7),
+            out(Parameter::Restitution)
+        );
+        assert_eq!(
+            preload_bounce_time(5e-5, 5000.0, 1.0, 0.5, 1.0 - 1e-13),
+            out(Parameter::Restitution)
+        );
+        assert!(preload_bounce_time(5e-5, 5000.0, 1.0, 0.5, 0.7).is_ok());
     }
 }
