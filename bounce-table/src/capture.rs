@@ -552,7 +552,7 @@ pub fn read_jsonl(
             continue;
         }
         let v: Value =
-            serde_json::from_str(raw).map_err(|e| error(file, i + 1, format!("not JSON: {e}")))?;
+            crate::strict::json(raw).map_err(|(_, message)| error(file, i + 1, message))?;
         lines.push((i + 1, v));
     }
     let mut invalid: Vec<String> = Vec::new();

@@ -284,12 +284,12 @@ pub fn evaluate(
     options: &Options,
 ) -> Result<Value, (String, FieldError)> {
     let default_name = format!("line {number}");
-    let value: Value = serde_json::from_str(line).map_err(|e| {
+    let value: Value = crate::strict::json(line).map_err(|(_, message)| {
         (
             default_name.clone(),
             FieldError {
                 field: String::new(),
-                message: format!("not JSON: {e}"),
+                message,
             },
         )
     })?;

@@ -14,3 +14,4 @@ pub mod replay;
 pub mod scene_input;
 pub mod scenes;
 pub mod spreads;
+pub mod strict;

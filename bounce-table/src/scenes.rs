@@ -151,10 +151,24 @@ pub fn read(path: &str) -> Result<Vec<Entry>, Vec<FileError>> {
             ));
         }
         match doc.get("switch") {
-            Some(toml::Value::Array(items)) => items
-                .iter()
-                .map(|v| serde_json::to_value(v).unwrap_or(Value::Null))
-                .collect(),
+            Some(toml::Value::Array(items)) => {
+                // NaN and inf have no JSON form: they would vanish into null (an optional
+                // field silently absent). Refused by name.
+                for (i, item) in items.iter().enumerate() {
+                    if let Some(field) = crate::strict::toml_non_finite(item) {
+                        return Err(vec![FileError {
+                            file: path.to_owned(),
+                            place: format!("entry {}", i + 1),
+                            field,
+                            message: "NaN and inf are not numbers a scene can take".to_owned(),
+                        }]);
+                    }
+                }
+                items
+                    .iter()
+                    .map(|v| serde_json::to_value(v).unwrap_or(Value::Null))
+                    .collect()
+            }
             _ => return Err(fail(String::new(), "no [[switch]] tables".to_owned())),
         }
     } else if path.ends_with(".jsonl") {
@@ -165,14 +179,14 @@ pub fn read(path: &str) -> Result<Vec<Entry>, Vec<FileError>> {
             .filter(|(_, l)| !l.trim().is_empty())
         {
             scenes.push(
-                serde_json::from_str(line)
-                    .map_err(|e| fail(format!("line {}", i + 1), format!("not JSON: {e}")))?,
+                crate::strict::json(line)
+                    .map_err(|(_, message)| fail(format!("line {}", i + 1), message))?,
             );
         }
         scenes
     } else {
-        let doc: Value = serde_json::from_str(&text)
-            .map_err(|e| fail(format!("line {}", e.line()), format!("not JSON: {e}")))?;
+        let doc: Value = crate::strict::json(&text)
+            .map_err(|(line, message)| fail(format!("line {line}"), message))?;
         match doc {
             Value::Array(items) => items,
             Value::Object(mut o) => match o.remove("switch") {

@@ -369,3 +369,38 @@ fn a_very_long_name_is_laid_out_not_a_panic() {
     );
     assert!(String::from_utf8_lossy(&out.stdout).contains(&long));
 }
+
+#[test]
+fn strict_parsing_refuses_nan_inf_duplicates_and_underflows_by_name() {
+    let dome = "mass = 5e-5\nstiffness = 5000\npreload_force = 1.0\nrestitution = 0.7\nclosing_speed = 0.5\n";
+    for (file, text, says) in [
+        (
+            "nan.toml",
+            format!("[[switch]]\nname = \"a\"\n{dome}damping_ratio = nan\n"),
+            "entry 1: damping_ratio: NaN and inf",
+        ),
+        (
+            "inf.toml",
+            format!("[[switch]]\nname = \"a\"\n{dome}damping_ratio = -inf\n"),
+            "entry 1: damping_ratio: NaN and inf",
+        ),
+        (
+            "dup.json",
+            r#"[{"name":"a","mass":5e-5,"stiffness":5000,"preload_force":1.0,"restitution":0.7,"restitution":0.2,"closing_speed":0.5}]"#.to_owned(),
+            "the key \"restitution\" is given twice",
+        ),
+        (
+            "under.jsonl",
+            r#"{"name":"a","mass":5e-5,"stiffness":5000,"preload_force":1.0,"restitution":0.7,"closing_speed":0.5,"damping_ratio":1e-400}"#.to_owned(),
+            "line 1: 1e-400 is not zero but reads as 0",
+        ),
+    ] {
+        let path = tmp(file);
+        std::fs::write(&path, text).expect("write");
+        let out = run(&[path.to_str().expect("utf8")]);
+        assert_eq!(out.status.code(), Some(2), "{file}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(says), "{file}: {err}");
+        assert!(out.stdout.is_empty(), "{file}");
+    }
+}
