@@ -274,12 +274,14 @@ fn progress<T>(done: &AtomicU64, total: u64, handles: &[std::thread::ScopedJoinH
 }
 
 fn sensitivities(template: &Template, tolerance: f64) -> Result<Vec<Sensitivity>, FieldError> {
-    let h = 0.01_f64;
     let mut out = Vec::new();
     for (k, (path, dist)) in template.params().iter().enumerate() {
         if dist.nominal() == 0.0 || dist.relative_half_width() == 0.0 {
             continue;
         }
+        // A 1 % step, but never out of the range the user gave (which the Monte Carlo has
+        // already sampled: R within (0.99, 0.995) must not be stepped to 1.002).
+        let h = 0.01_f64.min(dist.relative_half_width());
         let up = estimate(&template.scaled(k, 1.0 + h), tolerance)?.bounce;
         let down = estimate(&template.scaled(k, 1.0 - h), tolerance)?.bounce;
         let elasticity = (up.ln() - down.ln()) / ((1.0 + h).ln() - (1.0 - h).ln());

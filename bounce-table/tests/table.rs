@@ -404,3 +404,22 @@ fn strict_parsing_refuses_nan_inf_duplicates_and_underflows_by_name() {
         assert!(out.stdout.is_empty(), "{file}");
     }
 }
+
+#[test]
+fn a_restitution_range_near_one_is_not_refused_by_its_sensitivity_step() {
+    // The sensitivity's 1 % step took R = 0.9925 to 1.002, outside the model: refused by
+    // mistake. The step now stays inside the range given.
+    let path = tmp("r995.toml");
+    std::fs::write(
+        &path,
+        "[[switch]]\nname = \"a\"\nmass = 5e-5\nstiffness = 5000\npreload_force = 1.0\nrestitution = { min = 0.99, max = 0.995 }\nclosing_speed = 0.5\ndamping_ratio = 0.03\n",
+    )
+    .expect("write");
+    let out = run(&[path.to_str().expect("utf8")]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(String::from_utf8_lossy(&out.stdout).contains("Sensitivity of a"));
+}
