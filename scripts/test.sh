@@ -67,6 +67,33 @@ PY
 step "firmware under QEMU prints the host's lines (thumbv6m, thumbv7m, thumbv7em)"
 scripts/firmware.sh
 
+step "a firmware that depends on the crate links its own memory.x, not ours (a missing one fails)"
+app=$(mktemp -d)
+mkdir -p "$app/src" "$app/.cargo"
+cat > "$app/Cargo.toml" <<TOML
+[package]
+name = "dependent-app"
+version = "0.1.0"
+edition = "2021"
+[dependencies]
+contact-bounce = { path = "$PWD" }
+cortex-m = "0.7"
+cortex-m-rt = "0.7"
+panic-halt = "1"
+TOML
+printf '[target.thumbv7m-none-eabi]\nrustflags = ["-C", "link-arg=-Tlink.x"]\n' > "$app/.cargo/config.toml"
+printf '#![no_std]\n#![no_main]\nuse panic_halt as _;\n#[cortex_m_rt::entry]\nfn main() -> ! {\n    let _ = contact_bounce::window_ticks(1e-3, 1.5, 1e-4);\n    loop {}\n}\n' > "$app/src/main.rs"
+if (cd "$app" && cargo build --quiet --release --target thumbv7m-none-eabi > "$app/log" 2>&1); then
+  echo "FAIL: a dependent firmware without memory.x linked (it was given ours)" >&2
+  exit 1
+elif ! grep -q "memory.x" "$app/log"; then
+  echo "FAIL: the dependent firmware failed for another reason:" >&2
+  tail -20 "$app/log" >&2
+  exit 1
+fi
+echo "ok: without its own memory.x, the dependent firmware does not link"
+rm -rf "$app"
+
 step "firmware on the Arduino Uno (simavr) prints the host's lines"
 scripts/uno.sh
 
