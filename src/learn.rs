@@ -89,7 +89,7 @@ impl Tail {
         max(self.burst, self.late_bounce)
     }
 
-    /// The window this tail gives with `prior` (samples; see the module docs).
+    /// The window this tail gives with `prior` (samples; see [`crate::learn`]).
     #[must_use]
     pub const fn window(&self, prior: u16) -> u16 {
         let seen = self.longest();
@@ -220,7 +220,7 @@ const ACTIVE: u8 = 4;
 const LATE: u8 = 8;
 const RECENT: u8 = 16;
 
-/// One key's learning debouncer state (see the module docs): what it learned and the event in
+/// One key's learning debouncer state (see [`crate::learn`]): what it learned and the event in
 /// progress. 24 bytes; integer-only per sample.
 ///
 /// ```
@@ -424,8 +424,8 @@ impl LearningState {
     }
 }
 
-/// A debounced contact on an [`InputPin`] that learns its own switch's bounce (see the module
-/// docs), sampled by the caller at a period of its choosing.
+/// A debounced contact on an [`InputPin`] that learns its own switch's bounce (see
+/// [`crate::learn`]), sampled by the caller at a period of its choosing.
 ///
 /// ```
 /// use contact_bounce::{Edge, LearningDebouncer, Mode, Polarity, Windows};

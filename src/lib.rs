@@ -29,7 +29,7 @@ mod closed;
 mod debounce;
 mod error;
 mod float;
-mod learn;
+pub mod learn;
 mod map;
 mod mechanisms;
 mod method;
