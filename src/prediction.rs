@@ -159,7 +159,8 @@ pub struct Prediction<F> {
 
 impl<F: Float> Prediction<F> {
     /// Maps times and counts beyond the float's range to `Never` / `Infinite`, flagged
-    /// [`Approximations::BEYOND_RANGE`] (NaN is left alone: it would be a bug).
+    /// [`Approximations::BEYOND_RANGE`] (NaN is left alone: it would be a bug), and keeps
+    /// `last_above_time <= end_time` and `impacts_above <= impacts_total`.
     pub(crate) fn within_range(mut self) -> Self {
         let in_range = |x: F| x.is_finite() || x.is_nan();
         for t in [&mut self.end_time, &mut self.last_above_time] {
@@ -176,6 +177,22 @@ impl<F: Float> Prediction<F> {
                     *n = Count::Infinite;
                     self.approximations = self.approximations.with(Approximations::BEYOND_RANGE);
                 }
+            }
+        }
+        // What holds by definition holds in the numbers too: the last impact above the
+        // threshold is not after the end, and the impacts above are not more than all of
+        // them. Where a tier hands over between approximations (the map to the averaged
+        // tail) the two sides can disagree by their rounding; the result keeps the order.
+        if let (Time::At(above), Time::At(end)) = (self.last_above_time, self.end_time) {
+            if above > end {
+                self.last_above_time = Time::At(end);
+            }
+        }
+        if let (Count::Finite(above), Count::Finite(total)) =
+            (self.impacts_above, self.impacts_total)
+        {
+            if above > total {
+                self.impacts_above = Count::Finite(total);
             }
         }
         self

@@ -1,0 +1,189 @@
+//! A seeded random harness over the public API (the start of the fuzzing harness): scenes drawn
+//! across the whole accepted domain (log-uniform Omega 1e-2..1e9 rad/s, |Delta| 1e-15..1 m on
+//! both sides and 0, R from 0 to 1 - 1e-12 and 1, closing speeds 1e-9..1e6 m/s, zeta 0 and
+//! 1e-12..1e3, with and without a threshold), in f32 and f64, through every tier and Auto;
+//! and the debouncer and the learner on random samples and windows. Each call is checked for
+//! no panic, no NaN or negative time or count, and consistency (the last impact above the
+//! threshold not after the end, impacts above not more than all). `FUZZ_SCENES` sets the
+//! number of scenes per float (CI: the default; `scripts/fuzz.sh`: millions).
+
+use contact_bounce::{
+    Contact, Count, Float, Frequency, LearningState, Method, Mode, Nodes, Offset, Prediction,
+    Restitution, Scene, State, Threshold, Time, Tolerance, Viscous, Windows,
+};
+
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        self.0
+    }
+    #[allow(clippy::cast_precision_loss)]
+    fn unit(&mut self) -> f64 {
+        (self.next() >> 11) as f64 / (1_u64 << 53) as f64
+    }
+    fn log_uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        (lo.ln() + self.unit() * (hi.ln() - lo.ln())).exp()
+    }
+}
+
+fn scenes() -> usize {
+    std::env::var("FUZZ_SCENES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(20_000)
+}
+
+/// What is wrong with a prediction, if anything.
+fn fault<F: Float>(p: &Prediction<F>) -> Option<&'static str> {
+    let bad = |x: F| !x.is_finite() || x < F::ZERO;
+    for t in [p.end_time, p.last_above_time] {
+        if matches!(t, Time::At(t) if bad(t)) {
+            return Some("a time NaN, infinite or negative");
+        }
+    }
+    for n in [p.impacts_above, p.impacts_total] {
+        if matches!(n, Count::Finite(n) if bad(n)) {
+            return Some("a count NaN, infinite or negative");
+        }
+    }
+    if p.expected_error.is_some_and(bad) {
+        return Some("an expected error NaN, infinite or negative");
+    }
+    if let (Time::At(a), Time::At(e)) = (p.last_above_time, p.end_time) {
+        if a > e {
+            return Some("last_above_time > end_time");
+        }
+    }
+    if let (Count::Finite(a), Count::Finite(t)) = (p.impacts_above, p.impacts_total) {
+        if a > t {
+            return Some("impacts_above > impacts_total");
+        }
+    }
+    None
+}
+
+fn predictions<F: Float + std::fmt::Debug>(rng: &mut Rng, n: usize) -> (usize, Vec<String>) {
+    let mut checked = 0;
+    let mut faults = Vec::new();
+    for _ in 0..n {
+        let omega = rng.log_uniform(1e-2, 1e9);
+        let delta = match rng.next() % 3 {
+            0 => -rng.log_uniform(1e-15, 1.0),
+            1 => rng.log_uniform(1e-15, 1.0),
+            _ => 0.0,
+        };
+        let r = match rng.next() % 3 {
+            0 => 1.0 - rng.log_uniform(1e-12, 1.0),
+            1 => rng.unit(),
+            _ => 1.0,
+        };
+        let v0 = rng.log_uniform(1e-9, 1e6);
+        let zeta = match rng.next() % 3 {
+            0 => 0.0,
+            1 => rng.log_uniform(1e-12, 1e3),
+            _ => rng.unit() * 2.0,
+        };
+        let threshold = if rng.next() % 2 == 0 {
+            Threshold::FractionOfFirst(F::from_f64(rng.log_uniform(1e-9, 0.99)))
+        } else {
+            Threshold::None
+        };
+        let contact = Contact {
+            frequency: Frequency::Omega(F::from_f64(omega)),
+            offset: Offset::Delta(F::from_f64(delta)),
+            restitution: Restitution::Coefficient(F::from_f64(r)),
+            closing_speed: F::from_f64(v0),
+            threshold,
+        };
+        let Ok(viscous) = Viscous::new(F::from_f64(zeta)) else {
+            continue;
+        };
+        // Refused scenes are fine: a typed error, which is what the harness wants.
+        let Ok(scene) = Scene::new(contact, viscous) else {
+            continue;
+        };
+        let auto = Tolerance::new(F::from_f64(0.01)).unwrap_or_else(|_| unreachable!());
+        for method in [
+            Method::Closed,
+            Method::Averaged(Nodes::N4),
+            Method::Map {
+                max_impacts: 10_000,
+            },
+            Method::Auto(auto),
+        ] {
+            let p = scene.predict(method);
+            checked += 1;
+            if let Some(why) = fault(&p) {
+                faults.push(format!(
+                    "{why}: {method:?}, omega {omega:e} delta {delta:e} r {r} v0 {v0:e} zeta {zeta:e} {threshold:?}: {p:?}"
+                ));
+            }
+        }
+    }
+    (checked, faults)
+}
+
+#[test]
+fn predictions_on_random_scenes_are_finite_and_consistent() {
+    let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+    let n = scenes();
+    let (a, mut faults) = predictions::<f64>(&mut rng, n);
+    let (b, more) = predictions::<f32>(&mut rng, n);
+    faults.extend(more);
+    eprintln!("{} predictions checked, {} faults", a + b, faults.len());
+    assert!(
+        a + b > n,
+        "too few scenes were accepted to mean anything: {}",
+        a + b
+    );
+    assert!(
+        faults.is_empty(),
+        "{} faults, first: {}",
+        faults.len(),
+        faults[0]
+    );
+}
+
+#[test]
+fn the_debouncers_on_random_samples_and_windows_report_alternating_edges() {
+    let mut rng = Rng(0xD1B5_4A32_D192_ED03);
+    for _ in 0..scenes() / 20 {
+        let press = u16::try_from(rng.next() % 40).unwrap_or(0);
+        let release = u16::try_from(rng.next() % 40).unwrap_or(0);
+        let mode = if rng.next() % 2 == 0 {
+            Mode::Confirm
+        } else {
+            Mode::HoldOff
+        };
+        let windows = Windows::new(press, release, mode).unwrap_or_else(|_| unreachable!());
+        let closed = rng.next() % 2 == 0;
+        let (mut state, mut key) = (State::new(closed), LearningState::new(closed));
+        let (mut level, mut learned_level) = (closed, closed);
+        // Runs of random lengths, some a single sample (noise faster than the sampling).
+        let mut sample = closed;
+        for _ in 0..200 {
+            let run = 1 + rng.next() % 30;
+            sample = !sample;
+            for _ in 0..run {
+                if let Some(edge) = state.update(sample, &windows) {
+                    let to = edge == contact_bounce::Edge::Press;
+                    assert_ne!(to, level, "the debouncer reported the level it had");
+                    level = to;
+                }
+                if let Some(edge) = key.update(sample, &windows) {
+                    let to = edge == contact_bounce::Edge::Press;
+                    assert_ne!(to, learned_level, "the learner reported the level it had");
+                    learned_level = to;
+                }
+            }
+        }
+        let (p, r) = key.learned().windows(&windows);
+        assert!(p >= 1 && r >= 1 && p <= Windows::MAX_TICKS && r <= Windows::MAX_TICKS);
+        assert_eq!(state.is_closed(), level);
+        assert_eq!(key.is_closed(), learned_level);
+    }
+}

@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# The seeded random harness of host-tests/tests/fuzz.rs, long: FUZZ_SCENES scenes per float
+# (default 1,000,000: 8 million predictions at most, four tiers in f32 and f64), and the
+# debouncer and learner on a twentieth as many random windows. CI runs the same tests with
+# 20,000 scenes. Prints the counts; fails on any fault.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export FUZZ_SCENES="${FUZZ_SCENES:-1000000}"
+cargo test --release -p host-tests --test fuzz -- --nocapture 2>&1 | grep -E "predictions checked|test result|faults|panicked"
