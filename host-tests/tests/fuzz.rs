@@ -87,7 +87,7 @@ fn predictions<F: Float + std::fmt::Debug>(rng: &mut Rng, n: usize) -> (usize, V
             1 => rng.log_uniform(1e-12, 1e3),
             _ => rng.unit() * 2.0,
         };
-        let threshold = if rng.next() % 2 == 0 {
+        let threshold = if rng.next().is_multiple_of(2) {
             Threshold::FractionOfFirst(F::from_f64(rng.log_uniform(1e-9, 0.99)))
         } else {
             Threshold::None
@@ -154,13 +154,13 @@ fn the_debouncers_on_random_samples_and_windows_report_alternating_edges() {
     for _ in 0..scenes() / 20 {
         let press = u16::try_from(rng.next() % 40).unwrap_or(0);
         let release = u16::try_from(rng.next() % 40).unwrap_or(0);
-        let mode = if rng.next() % 2 == 0 {
+        let mode = if rng.next().is_multiple_of(2) {
             Mode::Confirm
         } else {
             Mode::HoldOff
         };
         let windows = Windows::new(press, release, mode).unwrap_or_else(|_| unreachable!());
-        let closed = rng.next() % 2 == 0;
+        let closed = rng.next().is_multiple_of(2);
         let (mut state, mut key) = (State::new(closed), LearningState::new(closed));
         let (mut level, mut learned_level) = (closed, closed);
         // Runs of random lengths, some a single sample (noise faster than the sampling).
