@@ -38,7 +38,7 @@ pub enum Polarity {
     ActiveHigh,
 }
 
-/// How a window is used (see the module docs).
+/// How a window is used (see [`crate::debounce`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum Mode {

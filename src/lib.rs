@@ -26,7 +26,7 @@ mod accuracy;
 mod averaged;
 pub mod catalogue;
 mod closed;
-mod debounce;
+pub mod debounce;
 mod error;
 mod float;
 pub mod learn;
