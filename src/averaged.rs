@@ -8,7 +8,7 @@
 //! is O(cutoff), on a tail that is itself O(cutoff) of the total.
 
 use crate::closed::{asymptotic_count, asymptotic_time, by_regime};
-use crate::error::{non_negative, Error, Parameter};
+use crate::error::{non_negative, Error, Parameter, Reason};
 use crate::mechanisms::Dissipation;
 use crate::prediction::{Approximations, Count, Prediction, Tier, Time};
 use crate::quadrature::{integrate, panel, Nodes, MAX_PANELS, PANEL_WIDTH};
@@ -100,9 +100,17 @@ impl<F: Float> Bodies<F> {
 /// x(t) of x'' + 2 zeta Omega x' + Omega^2 x = 0 from x(0), x'(0): under-, critically and
 /// over-damped.
 pub(crate) fn free_damped<F: Float>(omega: F, zeta: F, x0: F, v0: F, t: F) -> F {
+    if x0 == F::ZERO && v0 == F::ZERO {
+        // At rest it stays at rest, whatever the phase (which may overflow at large t).
+        return F::ZERO;
+    }
     if zeta < F::ONE {
         let damped = omega * (F::ONE - zeta * zeta).sqrt();
         let decay = (-zeta * omega * t).exp();
+        if decay == F::ZERO {
+            // Decayed beyond the float's range: the phase no longer matters.
+            return F::ZERO;
+        }
         decay * (x0 * (damped * t).cos() + (v0 + zeta * omega * x0) / damped * (damped * t).sin())
     } else if zeta == F::ONE {
         (-omega * t).exp() * (x0 + (v0 + omega * x0) * t)
@@ -282,7 +290,7 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
                 let period = scene.orbit().at(start).period();
                 return Ok(EnvelopePoint {
                     impulse: start,
-                    impacts: Count::Finite(F::ONE + (t / period).floor()),
+                    impacts: counted(F::ONE + (t / period).floor()),
                 });
             }
             _ => {}
@@ -319,7 +327,7 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
                 let (_, dn_part) = panel(s, s_hi, self.nodes, &mut f);
                 return Ok(EnvelopePoint {
                     impulse: s.exp(),
-                    impacts: Count::Finite(impacts + dn_part),
+                    impacts: counted(impacts + dn_part),
                 });
             }
             elapsed += dt;
@@ -352,7 +360,7 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
         Ok(EnvelopePoint {
             impulse,
             impacts: match more {
-                Count::Finite(n) => Count::Finite(impacts + n),
+                Count::Finite(n) => counted(impacts + n),
                 Count::Infinite => Count::Infinite,
             },
         })
@@ -397,7 +405,8 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
     /// bounce ends the relative position is the rest: Delta for a preload (closed), 0 for a gap.
     ///
     /// # Errors
-    /// [`Parameter::Time`] when `t` is NaN, infinite or negative.
+    /// [`Parameter::Time`] when `t` is NaN, infinite or negative, or with [`Reason::Overflow`]
+    /// when an undamped, moving centre of mass has a phase `Omega t` beyond the float's range.
     pub fn motion(&self, t: F, bodies: &Bodies<F>) -> Result<Motion<F>, Error> {
         let point = self.envelope(t)?;
         let scene = self.scene;
@@ -425,10 +434,24 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
             bodies.centre_velocity,
             t,
         );
+        if !centre.is_finite() {
+            // An undamped centre of mass whose phase Omega t is beyond the float's range.
+            return Err(Error::new(Parameter::Time, Reason::Overflow));
+        }
         Ok(Motion {
             relative,
             body1: centre + (F::ONE - bodies.mass_fraction_1) * relative,
             body2: centre - bodies.mass_fraction_1 * relative,
         })
+    }
+}
+
+/// A count as the envelope reports it: beyond the float's range it is `Infinite`, as a
+/// prediction's count is (never `Finite(inf)`).
+fn counted<F: Float>(n: F) -> Count<F> {
+    if n.is_finite() {
+        Count::Finite(n)
+    } else {
+        Count::Infinite
     }
 }

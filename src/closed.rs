@@ -11,7 +11,10 @@ use crate::quadrature::{panel, Compensated, Nodes};
 use crate::regime::Regime;
 use crate::{accuracy, Float, Scene};
 
-/// A closed-form time with the error to expect of it.
+/// A closed-form time with the error to expect of it. The methods that give one
+/// ([`Scene::t_b1`], [`Scene::t_b1v`], [`Scene::t_b2`], [`Scene::t_b2r`], [`Scene::t_grazing`])
+/// return `None` where the form does not apply, and also where its time is beyond the float's
+/// range (never an infinite time).
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Estimate<F> {
@@ -19,6 +22,14 @@ pub struct Estimate<F> {
     pub time: F,
     /// Expected relative error (physics.md sec. 5-6), `None` when outside the stated validity.
     pub expected_error: Option<F>,
+}
+
+impl<F: Float> Estimate<F> {
+    /// The estimate, if its time is a number the float holds (a closed form can overflow it,
+    /// e.g. t_b2 with a tiny zeta in f32): `None` is "beyond this float's range", never inf.
+    fn in_range(self) -> Option<Self> {
+        (self.time.is_finite() && self.time >= F::ZERO).then_some(self)
+    }
 }
 
 /// ln(1 + z) / z for z > -1, accurate as z -> 0 (series below |z| = 1e-4).
@@ -230,13 +241,15 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
     #[must_use]
     pub fn t_b1(&self) -> Option<Estimate<F>> {
         let scale = self.preload_scale()?;
-        (self.loss() > F::ZERO).then(|| {
-            let j0 = self.start_impulse() / scale;
-            Estimate {
-                time: self.start_impulse() / (self.loss() * self.omega() * scale),
-                expected_error: accuracy::atan_linearisation(j0),
-            }
-        })
+        (self.loss() > F::ZERO)
+            .then(|| {
+                let j0 = self.start_impulse() / scale;
+                Estimate {
+                    time: self.start_impulse() / (self.loss() * self.omega() * scale),
+                    expected_error: accuracy::atan_linearisation(j0),
+                }
+            })
+            .and_then(Estimate::in_range)
     }
 
     /// t_b1v = (3 / (2 zeta Omega)) ln(1 + 2 zeta J_B / (3 r Omega |Delta|)) (physics.md sec. 5):
@@ -244,6 +257,11 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
     /// Equals t_b1 at zeta = 0. `None` unless preload with R < 1.
     #[must_use]
     pub fn t_b1v(&self) -> Option<Estimate<F>> {
+        self.t_b1v_unbounded().and_then(Estimate::in_range)
+    }
+
+    /// [`Scene::t_b1v`], even beyond the float's range (the closed tier maps that itself).
+    fn t_b1v_unbounded(&self) -> Option<Estimate<F>> {
         let scale = self.preload_scale()?;
         if self.loss() <= F::ZERO {
             return None;
@@ -265,6 +283,11 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
     /// j0 <= 0.03). `None` unless a gap with zeta > 0.
     #[must_use]
     pub fn t_b2(&self) -> Option<Estimate<F>> {
+        self.t_b2_unbounded().and_then(Estimate::in_range)
+    }
+
+    /// [`Scene::t_b2`], even beyond the float's range.
+    fn t_b2_unbounded(&self) -> Option<Estimate<F>> {
         let zeta = self.dissipation().damping_ratio();
         if self.delta() <= F::ZERO || zeta <= F::ZERO {
             return None;
@@ -283,7 +306,12 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
     /// zeta > 0.
     #[must_use]
     pub fn t_b2r(&self) -> Option<Estimate<F>> {
-        let t_b2 = self.t_b2()?;
+        self.t_b2r_unbounded().and_then(Estimate::in_range)
+    }
+
+    /// [`Scene::t_b2r`], even beyond the float's range.
+    fn t_b2r_unbounded(&self) -> Option<Estimate<F>> {
+        let t_b2 = self.t_b2_unbounded()?;
         // t_b2 ln(1 + z) / z with z = (r / pi) Omega t_b2.
         let omega_t = t_b2.time * self.omega();
         Some(Estimate {
@@ -304,10 +332,13 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         let end = self.threshold_generating()?;
         let zeta = self.dissipation().damping_ratio();
         let rate = (self.loss() / F::PI + zeta) * self.omega();
-        (rate > F::ZERO).then(|| Estimate {
-            time: (self.start_impulse().ln() - end.ln()) / rate,
-            expected_error: accuracy::discreteness(self).map(|(bias, _)| bias + F::from_f64(0.02)),
-        })
+        (rate > F::ZERO)
+            .then(|| Estimate {
+                time: (self.start_impulse().ln() - end.ln()) / rate,
+                expected_error: accuracy::discreteness(self)
+                    .map(|(bias, _)| bias + F::from_f64(0.02)),
+            })
+            .and_then(Estimate::in_range)
     }
 
     /// The exact accumulation time of an undamped preload (physics.md sec. 5):
@@ -387,11 +418,12 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Predi
     let start = scene.start_impulse();
     // The named forms are the asymptote's integral to J = 0; report them as they are.
     let named = match (offset_class(scene.orbit()), dissipation.has_kernel()) {
-        (Offset::Preload, false) => scene.t_b1v().map(|e| (ClosedForm::Tb1v, e)),
+        // Unbounded: a time beyond the float's range becomes `Never` with its flag, below.
+        (Offset::Preload, false) => scene.t_b1v_unbounded().map(|e| (ClosedForm::Tb1v, e)),
         (Offset::Gap, false) if scene.loss() > F::ZERO => {
-            scene.t_b2r().map(|e| (ClosedForm::Tb2r, e))
+            scene.t_b2r_unbounded().map(|e| (ClosedForm::Tb2r, e))
         }
-        (Offset::Gap, false) => scene.t_b2().map(|e| (ClosedForm::Tb2, e)),
+        (Offset::Gap, false) => scene.t_b2_unbounded().map(|e| (ClosedForm::Tb2, e)),
         _ => None,
     };
     let (form, expected, end_time) = match named {

@@ -133,6 +133,10 @@ impl<F: Float, D: Dissipation<F>> Iterator for MapImpacts<'_, F, D> {
             Some(MapEnd::NoReturn)
         } else if preload && j <= F::TAIL_CUTOFF * scene.omega() * scene.delta().abs() {
             Some(MapEnd::ZenoTail(j))
+        } else if j.is_nan() || j < F::MIN_POSITIVE {
+            // The impulse has shrunk below the float's normal range (many impacts of a small
+            // R, a grazing or gap contact): no flight the float can describe follows.
+            Some(MapEnd::NoReturn)
         } else if self.index >= self.max_impacts {
             Some(MapEnd::Capped(j))
         } else {
@@ -145,7 +149,7 @@ impl<F: Float, D: Dissipation<F>> Iterator for MapImpacts<'_, F, D> {
         let point = scene.orbit().at(j);
         let period = point.period();
         let returning = j + scene.dissipation().rate(&point) * period;
-        if returning <= F::ZERO {
+        if returning.is_nan() || returning <= F::ZERO {
             // The first-order loss exceeds the flight's impulse (heavy damping): in a gap the
             // last impact was the last; a preload always returns, with a vanishing impulse.
             self.end = Some(if preload {

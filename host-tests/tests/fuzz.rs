@@ -8,8 +8,9 @@
 //! number of scenes per float (CI: the default; `scripts/fuzz.sh`: millions).
 
 use contact_bounce::{
-    Contact, Count, Float, Frequency, LearningState, Method, Mode, Nodes, Offset, Prediction,
-    Restitution, Scene, State, Threshold, Time, Tolerance, Viscous, Windows,
+    Averaged, Bodies, Contact, Count, Float, Frequency, LearningState, MapImpacts, Method, Mode,
+    Nodes, Offset, Prediction, Restitution, Scene, State, Threshold, Time, Tolerance, Viscous,
+    Windows,
 };
 
 struct Rng(u64);
@@ -107,6 +108,69 @@ fn predictions<F: Float + std::fmt::Debug>(rng: &mut Rng, n: usize) -> (usize, V
             continue;
         };
         let auto = Tolerance::new(F::from_f64(0.01)).unwrap_or_else(|_| unreachable!());
+        // The map walked impact by impact, the closed forms, the envelope and the laws of
+        // motion, at times from 0 to far past the end.
+        let mut walk = MapImpacts::new(&scene, 200);
+        let mut previous = F::ZERO;
+        for impact in walk.by_ref() {
+            if !(impact.time.is_finite() && impact.time >= previous && impact.impulse.is_finite())
+                || impact.impulse < F::ZERO
+            {
+                faults.push(format!("MapImpacts {impact:?} after {previous:?}, omega {omega:e} delta {delta:e} r {r} v0 {v0:e} zeta {zeta:e}"));
+                break;
+            }
+            previous = impact.time;
+        }
+        if walk
+            .zeno_tail_time()
+            .is_some_and(|t| !t.is_finite() || t < F::ZERO)
+        {
+            faults.push(format!(
+                "zeno tail {:?}, omega {omega:e} delta {delta:e} r {r} v0 {v0:e} zeta {zeta:e}",
+                walk.zeno_tail_time()
+            ));
+        }
+        for e in [
+            scene.t_b1(),
+            scene.t_b1v(),
+            scene.t_b2(),
+            scene.t_b2r(),
+            scene.t_grazing(),
+        ]
+        .into_iter()
+        .flatten()
+        {
+            if !e.time.is_finite() || e.time < F::ZERO {
+                faults.push(format!("closed form {} {e:?}, omega {omega:e} delta {delta:e} r {r} v0 {v0:e} zeta {zeta:e}", std::any::type_name::<F>()));
+            }
+        }
+        let averaged = Averaged::new(&scene, Nodes::N4);
+        let end = scene
+            .predict(Method::Averaged(Nodes::N4))
+            .bounce_time()
+            .unwrap_or(F::ONE);
+        for t in [
+            F::ZERO,
+            end * F::HALF,
+            end,
+            end * F::from_f64(10.0),
+            F::from_f64(1e30),
+        ] {
+            // An error is a typed refusal; a value must be a number.
+            if let Ok(p) = averaged.envelope(t) {
+                if !p.impulse.is_finite()
+                    || p.impulse < F::ZERO
+                    || matches!(p.impacts, Count::Finite(n) if !n.is_finite())
+                {
+                    faults.push(format!("envelope at {t:?}: {p:?}, omega {omega:e} delta {delta:e} r {r} v0 {v0:e} zeta {zeta:e}"));
+                }
+            }
+            if let Ok(m) = averaged.motion(t, &Bodies::equal_at_rest()) {
+                if !(m.relative.is_finite() && m.body1.is_finite() && m.body2.is_finite()) {
+                    faults.push(format!("motion at {t:?}: {m:?}, omega {omega:e} delta {delta:e} r {r} v0 {v0:e} zeta {zeta:e}"));
+                }
+            }
+        }
         for method in [
             Method::Closed,
             Method::Averaged(Nodes::N4),
@@ -135,6 +199,23 @@ fn predictions_on_random_scenes_are_finite_and_consistent() {
     let (b, more) = predictions::<f32>(&mut rng, n);
     faults.extend(more);
     eprintln!("{} predictions checked, {} faults", a + b, faults.len());
+    let mut classes = std::collections::BTreeMap::new();
+    for f in &faults {
+        let class: String = f
+            .split([',', ':'])
+            .next()
+            .unwrap_or("")
+            .chars()
+            .take(40)
+            .collect();
+        classes.entry(class).or_insert((0, f.clone())).0 += 1;
+    }
+    for (class, (count, example)) in &classes {
+        eprintln!(
+            "{count:7} {class}\n        {}",
+            &example[..example.len().min(300)]
+        );
+    }
     assert!(
         a + b > n,
         "too few scenes were accepted to mean anything: {}",
