@@ -133,7 +133,7 @@ impl<F: Float, D: Dissipation<F>> Iterator for MapImpacts<'_, F, D> {
             Some(MapEnd::NoReturn)
         } else if preload && j <= F::TAIL_CUTOFF * scene.omega() * scene.delta().abs() {
             Some(MapEnd::ZenoTail(j))
-        } else if j.is_nan() || j < F::MIN_POSITIVE {
+        } else if j < F::MIN_POSITIVE {
             // The impulse has shrunk below the float's normal range (many impacts of a small
             // R, a grazing or gap contact): no flight the float can describe follows.
             Some(MapEnd::NoReturn)
@@ -149,7 +149,8 @@ impl<F: Float, D: Dissipation<F>> Iterator for MapImpacts<'_, F, D> {
         let point = scene.orbit().at(j);
         let period = point.period();
         let returning = j + scene.dissipation().rate(&point) * period;
-        if returning.is_nan() || returning <= F::ZERO {
+        // (NaN cannot arise here: j is a normal positive number above.)
+        if returning <= F::ZERO {
             // The first-order loss exceeds the flight's impulse (heavy damping): in a gap the
             // last impact was the last; a preload always returns, with a vanishing impulse.
             self.end = Some(if preload {
