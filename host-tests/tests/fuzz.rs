@@ -4,13 +4,15 @@
 //! 1e-12..1e3, with and without a threshold), in f32 and f64, through every tier and Auto;
 //! and the debouncer and the learner on random samples and windows. Each call is checked for
 //! no panic, no NaN or negative time or count, and consistency (the last impact above the
-//! threshold not after the end, impacts above not more than all). `FUZZ_SCENES` sets the
-//! number of scenes per float (CI: the default; `scripts/fuzz.sh`: millions).
+//! threshold not after the end, impacts above not more than all). Each scene is also tried
+//! with two bodies of unequal partial frequencies, and (with `FUZZ_KERNELS` set) with an
+//! exponential kernel. `FUZZ_SCENES` sets the number of scenes per float (CI: the default;
+//! `scripts/fuzz.sh`: millions).
 
 use contact_bounce::{
-    Averaged, Bodies, Contact, Count, Float, Frequency, LearningState, MapImpacts, Method, Mode,
-    Nodes, Offset, Prediction, Restitution, Scene, State, Threshold, Time, Tolerance, Viscous,
-    Windows,
+    Averaged, Bodies, Contact, Count, Float, Frequency, Hereditary, LearningState, MapImpacts,
+    Method, Mode, Nodes, Offset, Prediction, Restitution, Scene, State, Threshold, Time, Tolerance,
+    TwoBody, Viscous, Windows,
 };
 
 struct Rng(u64);
@@ -29,6 +31,10 @@ impl Rng {
     fn log_uniform(&mut self, lo: f64, hi: f64) -> f64 {
         (lo.ln() + self.unit() * (hi.ln() - lo.ln())).exp()
     }
+}
+
+fn kernels() -> bool {
+    std::env::var_os("FUZZ_KERNELS").is_some()
 }
 
 fn scenes() -> usize {
@@ -107,88 +113,145 @@ fn predictions<F: Float + std::fmt::Debug>(rng: &mut Rng, n: usize) -> (usize, V
         let Ok(scene) = Scene::new(contact, viscous) else {
             continue;
         };
-        let auto = Tolerance::new(F::from_f64(0.01)).unwrap_or_else(|_| unreachable!());
-        // The map walked impact by impact, the closed forms, the envelope and the laws of
-        // motion, at times from 0 to far past the end.
-        let mut walk = MapImpacts::new(&scene, 200);
-        let mut previous = F::ZERO;
-        for impact in walk.by_ref() {
-            if !(impact.time.is_finite() && impact.time >= previous && impact.impulse.is_finite())
-                || impact.impulse < F::ZERO
-            {
-                faults.push(format!("MapImpacts {impact:?} after {previous:?}, omega {omega:e} delta {delta:e} r {r} v0 {v0:e} zeta {zeta:e}"));
-                break;
-            }
-            previous = impact.time;
-        }
-        if walk
-            .zeno_tail_time()
-            .is_some_and(|t| !t.is_finite() || t < F::ZERO)
-        {
-            faults.push(format!(
-                "zeno tail {:?}, omega {omega:e} delta {delta:e} r {r} v0 {v0:e} zeta {zeta:e}",
-                walk.zeno_tail_time()
-            ));
-        }
-        for e in [
-            scene.t_b1(),
-            scene.t_b1v(),
-            scene.t_b2(),
-            scene.t_b2r(),
-            scene.t_grazing(),
-        ]
-        .into_iter()
-        .flatten()
-        {
-            if !e.time.is_finite() || e.time < F::ZERO {
-                faults.push(format!("closed form {} {e:?}, omega {omega:e} delta {delta:e} r {r} v0 {v0:e} zeta {zeta:e}", std::any::type_name::<F>()));
+        let what =
+            format!("omega {omega:e} delta {delta:e} r {r} v0 {v0:e} zeta {zeta:e} {threshold:?}");
+        check_scene(&scene, &what, &mut checked, &mut faults);
+        // The same contact with an exponential kernel below the spring's stiffness (only with
+        // FUZZ_KERNELS set: its classes are still open, see scripts/fuzz.sh).
+        let tau = rng.log_uniform(1e-3, 1e3) / omega;
+        let kappa = rng.unit() * 0.9 * omega * omega / tau;
+        if let (true, Ok(viscous), Ok(kernel)) = (
+            kernels(),
+            Viscous::new(F::from_f64(zeta)),
+            Hereditary::exponential(F::from_f64(kappa), F::from_f64(tau)),
+        ) {
+            if let Ok(scene) = Scene::new(contact, (viscous, kernel)) {
+                check_scene(
+                    &scene,
+                    &format!("{what} kappa {kappa:e} tau {tau:e}"),
+                    &mut checked,
+                    &mut faults,
+                );
             }
         }
-        let averaged = Averaged::new(&scene, Nodes::N4);
-        let end = scene
-            .predict(Method::Averaged(Nodes::N4))
-            .bounce_time()
-            .unwrap_or(F::ONE);
-        for t in [
-            F::ZERO,
-            end * F::HALF,
-            end,
-            end * F::from_f64(10.0),
-            F::from_f64(1e30),
-        ] {
-            // An error is a typed refusal; a value must be a number.
-            if let Ok(p) = averaged.envelope(t) {
-                if !p.impulse.is_finite()
-                    || p.impulse < F::ZERO
-                    || matches!(p.impacts, Count::Finite(n) if !n.is_finite())
-                {
-                    faults.push(format!("envelope at {t:?}: {p:?}, omega {omega:e} delta {delta:e} r {r} v0 {v0:e} zeta {zeta:e}"));
-                }
-            }
-            if let Ok(m) = averaged.motion(t, &Bodies::equal_at_rest()) {
-                if !(m.relative.is_finite() && m.body1.is_finite() && m.body2.is_finite()) {
-                    faults.push(format!("motion at {t:?}: {m:?}, omega {omega:e} delta {delta:e} r {r} v0 {v0:e} zeta {zeta:e}"));
-                }
-            }
-        }
-        for method in [
-            Method::Closed,
-            Method::Averaged(Nodes::N4),
-            Method::Map {
-                max_impacts: 10_000,
-            },
-            Method::Auto(auto),
-        ] {
-            let p = scene.predict(method);
-            checked += 1;
-            if let Some(why) = fault(&p) {
-                faults.push(format!(
-                    "{why}: {method:?}, omega {omega:e} delta {delta:e} r {r} v0 {v0:e} zeta {zeta:e} {threshold:?}: {p:?}"
-                ));
-            }
+        // Two bodies whose partial frequencies differ by up to 2x each way.
+        let (m1, m2) = (rng.log_uniform(1e-9, 10.0), rng.log_uniform(1e-9, 10.0));
+        let (f1, f2) = (rng.log_uniform(0.5, 2.0), rng.log_uniform(0.5, 2.0));
+        let (c1, c2) = (m1 * omega * omega * f1, m2 * omega * omega * f2);
+        let bodies = TwoBody {
+            m1: F::from_f64(m1),
+            c1: F::from_f64(c1),
+            d1: F::from_f64(2.0 * zeta * (c1 * m1).sqrt()),
+            m2: F::from_f64(m2),
+            c2: F::from_f64(c2),
+            d2: F::from_f64(2.0 * zeta * (c2 * m2).sqrt()),
+        };
+        if let Ok(scene) = Scene::two_body(
+            bodies,
+            Offset::Delta(F::from_f64(delta)),
+            Restitution::Coefficient(F::from_f64(r)),
+            F::from_f64(v0),
+            threshold,
+            None,
+        ) {
+            check_scene(
+                &scene,
+                &format!("{what} two bodies {bodies:?}"),
+                &mut checked,
+                &mut faults,
+            );
         }
     }
     (checked, faults)
+}
+
+/// Every check on one accepted scene: the map walked impact by impact, the closed forms, the
+/// envelope and the laws of motion at times from 0 to far past the end, and every tier.
+fn check_scene<F: Float + std::fmt::Debug, D: contact_bounce::Dissipation<F>>(
+    scene: &Scene<F, D>,
+    what: &str,
+    checked: &mut usize,
+    faults: &mut Vec<String>,
+) {
+    let scene = scene.clone();
+    let auto = Tolerance::new(F::from_f64(0.01)).unwrap_or_else(|_| unreachable!());
+    // The map walked impact by impact, the closed forms, the envelope and the laws of
+    // motion, at times from 0 to far past the end.
+    let mut walk = MapImpacts::new(&scene, 200);
+    let mut previous = F::ZERO;
+    for impact in walk.by_ref() {
+        if !(impact.time.is_finite() && impact.time >= previous && impact.impulse.is_finite())
+            || impact.impulse < F::ZERO
+        {
+            faults.push(format!("MapImpacts {impact:?} after {previous:?}, {what}"));
+            break;
+        }
+        previous = impact.time;
+    }
+    if walk
+        .zeno_tail_time()
+        .is_some_and(|t| !t.is_finite() || t < F::ZERO)
+    {
+        faults.push(format!("zeno tail {:?}, {what}", walk.zeno_tail_time()));
+    }
+    for e in [
+        scene.t_b1(),
+        scene.t_b1v(),
+        scene.t_b2(),
+        scene.t_b2r(),
+        scene.t_grazing(),
+    ]
+    .into_iter()
+    .flatten()
+    {
+        if !e.time.is_finite() || e.time < F::ZERO {
+            faults.push(format!(
+                "closed form {} {e:?}, {what}",
+                std::any::type_name::<F>()
+            ));
+        }
+    }
+    let averaged = Averaged::new(&scene, Nodes::N4);
+    let end = scene
+        .predict(Method::Averaged(Nodes::N4))
+        .bounce_time()
+        .unwrap_or(F::ONE);
+    for t in [
+        F::ZERO,
+        end * F::HALF,
+        end,
+        end * F::from_f64(10.0),
+        F::from_f64(1e30),
+    ] {
+        // An error is a typed refusal; a value must be a number.
+        if let Ok(p) = averaged.envelope(t) {
+            if !p.impulse.is_finite()
+                || p.impulse < F::ZERO
+                || matches!(p.impacts, Count::Finite(n) if !n.is_finite())
+            {
+                faults.push(format!("envelope at {t:?}: {p:?}, {what}"));
+            }
+        }
+        if let Ok(m) = averaged.motion(t, &Bodies::equal_at_rest()) {
+            if !(m.relative.is_finite() && m.body1.is_finite() && m.body2.is_finite()) {
+                faults.push(format!("motion at {t:?}: {m:?}, {what}"));
+            }
+        }
+    }
+    for method in [
+        Method::Closed,
+        Method::Averaged(Nodes::N4),
+        Method::Map {
+            max_impacts: 10_000,
+        },
+        Method::Auto(auto),
+    ] {
+        let p = scene.predict(method);
+        *checked += 1;
+        if let Some(why) = fault(&p) {
+            faults.push(format!("{why}: {method:?}, {what}: {p:?}"));
+        }
+    }
 }
 
 #[test]
