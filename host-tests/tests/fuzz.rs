@@ -173,7 +173,7 @@ fn check_scene<F: Float + std::fmt::Debug, D: contact_bounce::Dissipation<F>>(
     checked: &mut usize,
     faults: &mut Vec<String>,
 ) {
-    let scene = scene.clone();
+    let scene = *scene;
     let auto = Tolerance::new(F::from_f64(0.01)).unwrap_or_else(|_| unreachable!());
     // The map walked impact by impact, the closed forms, the envelope and the laws of
     // motion, at times from 0 to far past the end.
