@@ -174,7 +174,16 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
         if quad_low > F::ZERO && high > quad_low {
             let ((t, n), cap) =
                 integrate(quad_low.ln(), high.ln(), self.nodes, |s| self.integrand(s));
+            if t.is_nan() || t < F::ZERO || !t.is_finite() {
+                // The decay rate vanished in this float on the way down (it underflows, or
+                // rounds to the wrong sign, at small J): J does not reach `low` in any time
+                // the float can tell.
+                return (Time::Never, Count::Infinite, cap);
+            }
             (time, impacts, capped) = (t, n, cap);
+            if !impacts.is_finite() {
+                return (Time::At(time), Count::Infinite, capped);
+            }
         }
         let asymptote_top = if quad_low > F::ZERO {
             high.min(quad_low)
@@ -322,6 +331,16 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
                 break;
             }
             let (dt, dn) = panel(s_lo, s_hi, self.nodes, &mut f);
+            if dt.is_nan() || dt <= F::ZERO || !dt.is_finite() {
+                // Below s_hi the decay rate vanishes in this float: J stays where it is, and
+                // the impacts go on at its period.
+                let impulse = s_hi.exp();
+                let period = scene.orbit().at(impulse).period();
+                return Ok(EnvelopePoint {
+                    impulse,
+                    impacts: counted(impacts + (t - elapsed) / period),
+                });
+            }
             if elapsed + dt >= t {
                 let s = self.solve_in_panel(s_lo, s_hi, t - elapsed, dt);
                 let (_, dn_part) = panel(s, s_hi, self.nodes, &mut f);

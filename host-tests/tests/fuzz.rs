@@ -5,9 +5,8 @@
 //! and the debouncer and the learner on random samples and windows. Each call is checked for
 //! no panic, no NaN or negative time or count, and consistency (the last impact above the
 //! threshold not after the end, impacts above not more than all). Each scene is also tried
-//! with two bodies of unequal partial frequencies, and (with `FUZZ_KERNELS` set) with an
-//! exponential kernel. `FUZZ_SCENES` sets the number of scenes per float (CI: the default;
-//! `scripts/fuzz.sh`: millions).
+//! with an exponential kernel and as two bodies of unequal partial frequencies. `FUZZ_SCENES`
+//! sets the number of scenes per float (CI: the default, 10,000; `scripts/fuzz.sh`: millions).
 
 use contact_bounce::{
     Averaged, Bodies, Contact, Count, Float, Frequency, Hereditary, LearningState, MapImpacts,
@@ -33,15 +32,11 @@ impl Rng {
     }
 }
 
-fn kernels() -> bool {
-    std::env::var_os("FUZZ_KERNELS").is_some()
-}
-
 fn scenes() -> usize {
     std::env::var("FUZZ_SCENES")
         .ok()
         .and_then(|v| v.parse().ok())
-        .unwrap_or(20_000)
+        .unwrap_or(10_000)
 }
 
 /// What is wrong with a prediction, if anything.
@@ -116,12 +111,10 @@ fn predictions<F: Float + std::fmt::Debug>(rng: &mut Rng, n: usize) -> (usize, V
         let what =
             format!("omega {omega:e} delta {delta:e} r {r} v0 {v0:e} zeta {zeta:e} {threshold:?}");
         check_scene(&scene, &what, &mut checked, &mut faults);
-        // The same contact with an exponential kernel below the spring's stiffness (only with
-        // FUZZ_KERNELS set: its classes are still open, see scripts/fuzz.sh).
+        // The same contact with an exponential kernel below the spring's stiffness.
         let tau = rng.log_uniform(1e-3, 1e3) / omega;
         let kappa = rng.unit() * 0.9 * omega * omega / tau;
-        if let (true, Ok(viscous), Ok(kernel)) = (
-            kernels(),
+        if let (Ok(viscous), Ok(kernel)) = (
             Viscous::new(F::from_f64(zeta)),
             Hereditary::exponential(F::from_f64(kappa), F::from_f64(tau)),
         ) {
