@@ -11,15 +11,7 @@ fn scenes() -> Vec<(&'static str, OneBody, f64)> {
     catalogue::ALL
         .iter()
         .map(|s| {
-            let omega = (s.stiffness / s.mass).sqrt();
-            let reference = OneBody {
-                omega,
-                delta: -s.preload_force / s.stiffness,
-                restitution: s.restitution,
-                zeta: s.damping_ratio,
-                closing_speed: s.closing_speed,
-                threshold: None,
-            };
+            let reference = OneBody::typical(s);
             let scene = s.scene::<f64>().expect("catalogue scenes are valid");
             let p = scene.predict(Method::Auto(Tolerance::new(0.1).expect("valid")));
             let window =

@@ -8,17 +8,6 @@ use contact_bounce::{catalogue, LearningState, Mode, Windows, WARM_UP};
 use host_tests::reference::OneBody;
 use host_tests::traces::{Dwell, Trace};
 
-fn reference(s: &catalogue::Typical) -> OneBody {
-    OneBody {
-        omega: (s.stiffness / s.mass).sqrt(),
-        delta: -s.preload_force / s.stiffness,
-        restitution: s.restitution,
-        zeta: s.damping_ratio,
-        closing_speed: s.closing_speed,
-        threshold: None,
-    }
-}
-
 #[test]
 fn the_learner_has_no_false_edge_and_learns_the_bounce_of_every_catalogue_switch() {
     let mut checked = 0;
@@ -28,7 +17,7 @@ fn the_learner_has_no_false_edge_and_learns_the_bounce_of_every_catalogue_switch
             Dwell::FractionOfFlight(0.1),
             Dwell::FractionOfFlight(0.5),
         ] {
-            let trace = Trace::press(&reference(s), dwell).expect("trace");
+            let trace = Trace::press(&OneBody::typical(s), dwell).expect("trace");
             let bounce = trace.end;
             for divisions in [20.0, 5.0, 1.0] {
                 let period = bounce / divisions;

@@ -33,15 +33,7 @@ fn main() {
     let _ = writeln!(out, "|---|---:|---:|---|---:|---:|---:|");
     let period = 1e-4;
     for s in catalogue::ALL {
-        let omega = (s.stiffness / s.mass).sqrt();
-        let reference = OneBody {
-            omega,
-            delta: -s.preload_force / s.stiffness,
-            restitution: s.restitution,
-            zeta: s.damping_ratio,
-            closing_speed: s.closing_speed,
-            threshold: None,
-        };
+        let reference = OneBody::typical(&s);
         let Ok(trace) = Trace::press(&reference, Dwell::FractionOfFlight(0.1)) else {
             continue;
         };

@@ -10,14 +10,7 @@ use host_tests::traces::{Dwell, Trace};
 
 fn main() {
     let s = catalogue::SIGNAL_RELAY;
-    let reference = OneBody {
-        omega: (s.stiffness / s.mass).sqrt(),
-        delta: -s.preload_force / s.stiffness,
-        restitution: s.restitution,
-        zeta: s.damping_ratio,
-        closing_speed: s.closing_speed,
-        threshold: None,
-    };
+    let reference = OneBody::typical(&s);
     let Ok(trace) = Trace::press(&reference, Dwell::FractionOfFlight(0.1)) else {
         eprintln!("trace-data: the reference failed");
         std::process::exit(1);

@@ -33,6 +33,22 @@ pub struct OneBody {
     pub threshold: Option<f64>,
 }
 
+impl OneBody {
+    /// A catalogue switch as the reference models it: Omega = sqrt(c / m), the preload
+    /// Delta = -F / c, no threshold.
+    #[must_use]
+    pub fn typical(s: &contact_bounce::catalogue::Typical) -> Self {
+        Self {
+            omega: (s.stiffness / s.mass).sqrt(),
+            delta: -s.preload_force / s.stiffness,
+            restitution: s.restitution,
+            zeta: s.damping_ratio,
+            closing_speed: s.closing_speed,
+            threshold: None,
+        }
+    }
+}
+
 /// How the bounce ends (physics.md sec. 4).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Regime {
