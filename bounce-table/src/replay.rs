@@ -378,17 +378,26 @@ pub fn score(row: &mut Row, traces: &[Trace], period: f64) -> Score {
                 edges
             }
         };
-        let moved = trace.closed_after() != trace.closed_before;
-        let extra = edges.len().saturating_sub(usize::from(moved));
-        s.false_edges += extra;
-        s.tests_with_false_edges += usize::from(extra > 0);
-        if moved {
-            if let Some(&first) = edges.first() {
-                s.latencies.push(first);
-            }
-        }
+        s.tally(trace, &edges);
     }
     s
+}
+
+impl Score {
+    /// Scores one test's reported edges (their times from the first change, s); returns its
+    /// false edges (beyond the test's one true edge).
+    fn tally(&mut self, trace: &Trace, edges: &[f64]) -> usize {
+        let moved = trace.closed_after() != trace.closed_before;
+        let extra = edges.len().saturating_sub(usize::from(moved));
+        self.false_edges += extra;
+        self.tests_with_false_edges += usize::from(extra > 0);
+        if moved {
+            if let Some(&first) = edges.first() {
+                self.latencies.push(first);
+            }
+        }
+        extra
+    }
 }
 
 /// The peers, each at its documented default, at `period` (s) between samples.
@@ -736,8 +745,20 @@ pub fn learned(events: &[&Event], prior: f64, s: &Settings) -> Result<Learning, 
             }
             k += 1;
         }
-        let moved = trace.closed_after() != trace.closed_before;
-        let extra = edges.len().saturating_sub(usize::from(moved));
+        let scored = i >= cuts[slot].1;
+        let mut unscored = Score {
+            events: 0,
+            false_edges: 0,
+            tests_with_false_edges: 0,
+            latencies: Vec::new(),
+        };
+        let score = if scored {
+            scores[slot].1.events += 1;
+            &mut scores[slot].1
+        } else {
+            &mut unscored
+        };
+        let extra = score.tally(&trace, &edges);
         let (press, release) = key.learned().windows(&windows);
         curve.push(CurvePoint {
             test: n + 1,
@@ -748,20 +769,8 @@ pub fn learned(events: &[&Event], prior: f64, s: &Settings) -> Result<Learning, 
                 release
             }),
             false_edges: extra,
-            scored: i >= cuts[slot].1,
+            scored,
         });
-        if i < cuts[slot].1 {
-            continue;
-        }
-        let score = &mut scores[slot].1;
-        score.events += 1;
-        score.false_edges += extra;
-        score.tests_with_false_edges += usize::from(extra > 0);
-        if moved {
-            if let Some(&first) = edges.first() {
-                score.latencies.push(first);
-            }
-        }
     }
     let (press, release) = key.learned().windows(&windows);
     Ok(Learning {
