@@ -28,6 +28,7 @@ pub mod catalogue;
 mod closed;
 pub mod debounce;
 mod error;
+mod exact;
 mod float;
 pub mod learn;
 mod map;
@@ -44,6 +45,7 @@ pub use averaged::{Averaged, Bodies, EnvelopePoint, Motion};
 pub use closed::Estimate;
 pub use debounce::{Debouncer, Edge, Mode, Polarity, State, Windows};
 pub use error::{Error, Parameter, Reason, PHYSICAL_RANGE};
+pub use exact::{EXACT_MAX_IMPACTS, ROOT_STEPS};
 pub use float::{Float, F32_BACKEND};
 pub use learn::{
     Learned, LearningDebouncer, LearningState, Tail, LATE_EVIDENCE, LATE_GAP, WARM_UP,

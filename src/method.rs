@@ -6,7 +6,7 @@ use crate::mechanisms::Dissipation;
 use crate::prediction::Prediction;
 use crate::quadrature::{panel_count, Nodes};
 use crate::regime::Regime;
-use crate::{accuracy, closed, map, Float, Scene};
+use crate::{accuracy, closed, exact, map, Float, Scene};
 
 /// A relative tolerance asked of [`Method::Auto`] (finite, > 0).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -42,9 +42,22 @@ pub enum Method<F> {
         /// Cap on iterated impacts (the averaged model finishes beyond it).
         max_impacts: u32,
     },
-    /// The cheapest tier whose expected error (physics.md sec. 6) is within the tolerance; if
-    /// none is, the one with the smallest expected error: check
-    /// [`Prediction::promises`] (when it is false, use an exact reference on the host).
+    /// The exact solution, impact by impact (one body, restitution and viscous damping),
+    /// solving at most this many flights (the averaged model finishes beyond; see
+    /// [`Scene::exact_work`] for the bound on its work). Its expected error is the float's
+    /// rounding. Scenes without viscous damping or with Delta = 0 get the closed tier's exact
+    /// sums; with a relaxation kernel it answers with the averaged model (20 nodes), whose
+    /// [`Tier`](crate::Tier) and expected error say so.
+    Exact {
+        /// Cap on solved flights ([`EXACT_MAX_IMPACTS`](crate::EXACT_MAX_IMPACTS) is the
+        /// default).
+        max_impacts: u32,
+    },
+    /// The cheapest tier whose expected error (physics.md sec. 6) is within the tolerance:
+    /// closed, then the map or the averaged model by their cost, then the exact tier, which
+    /// promises the float's rounding on every one-body scene without a kernel. Where nothing
+    /// does (a kernel; f32 over very many impacts; a return decided by rounding) the smallest
+    /// expected error wins: check [`Prediction::promises`].
     Auto(Tolerance<F>),
 }
 
@@ -82,6 +95,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
             Method::Closed => closed::predict(self),
             Method::Averaged(nodes) => Averaged::new(self, nodes).predict(),
             Method::Map { max_impacts } => map::predict(self, max_impacts),
+            Method::Exact { max_impacts } => exact::predict(self, max_impacts),
             Method::Auto(tolerance) => self.auto(tolerance),
         }
         .within_range()
@@ -130,23 +144,32 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         let run_map = || map::predict(self, cap);
         let run_averaged = || Averaged::new(self, Nodes::N8).predict();
         let map_first = map_cost <= averaged_cost;
-        match (fits(map_error), fits(averaged_error), map_first) {
-            (true, true, true) | (true, false, _) => run_map(),
-            (_, true, _) => run_averaged(),
-            _ => {
-                // Nothing promises the tolerance: the smallest expected error wins.
-                let rank = |e: Option<F>| e.unwrap_or(F::MAX);
-                let best_other = if rank(map_error) < rank(averaged_error) {
-                    run_map()
-                } else {
-                    run_averaged()
-                };
-                if rank(best_other.expected_error) < rank(closed.expected_error) {
-                    best_other
-                } else {
-                    closed
-                }
+        let cheaper = match (fits(map_error), fits(averaged_error), map_first) {
+            (true, true, true) | (true, false, _) => Some(run_map()),
+            (_, true, _) => Some(run_averaged()),
+            _ => None,
+        };
+        // A tier chosen on estimates states its own error once it has run (the map's, say,
+        // from the count it found): it is kept only if it still promises.
+        if let Some(p) = cheaper {
+            if p.promises(tolerance) {
+                return p;
             }
         }
+        // The exact tier, whose error is the float's rounding (or the averaged rest past its
+        // cap). If even it does not promise (a kernel, a return decided by rounding, f32 over
+        // many impacts), the smallest expected error wins.
+        let exact = exact::predict(self, exact::EXACT_MAX_IMPACTS);
+        if exact.promises(tolerance) {
+            return exact;
+        }
+        let rank = |e: Option<F>| e.unwrap_or(F::MAX);
+        let mut best = closed;
+        for other in [run_map(), run_averaged(), exact] {
+            if rank(other.expected_error) < rank(best.expected_error) {
+                best = other;
+            }
+        }
+        best
     }
 }

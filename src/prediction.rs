@@ -79,6 +79,8 @@ pub enum Tier {
     Averaged(crate::Nodes),
     /// The semi-discrete map (physics.md sec. 6).
     Map,
+    /// The exact event-driven solution (flights in closed form, returns solved to rounding).
+    Exact,
 }
 
 /// Approximations made on the way to a prediction (a small bit set).
@@ -94,7 +96,8 @@ impl Approximations {
     /// A closed form or tier used outside the validity physics.md sec. 6 states for it:
     /// `expected_error` is then `None`.
     pub const OUTSIDE_VALIDITY: Self = Self(1 << 1);
-    /// The map reached its iteration cap and the averaged model finished the sum.
+    /// An iterating tier (the map, the exact tier) reached its cap on impacts and the
+    /// averaged model finished the sum.
     pub const MAP_CONTINUED_AVERAGED: Self = Self(1 << 2);
     /// A quadrature reached its panel cap before its range ended.
     pub const PANELS_CAPPED: Self = Self(1 << 3);

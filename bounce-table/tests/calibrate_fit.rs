@@ -33,14 +33,16 @@ fn press_with_dwell(restitution: f64, closing_speed: f64, start: f64, dwell: f64
     let mut impacts = Vec::new();
     simulate_observed(&scene, DEFAULT_BUDGET, |t, _| impacts.push(t))
         .expect("the reference simulates it");
-    let mut now = start;
-    let mut changes = vec![now];
+    // Times from the first change are summed first, and the start added once to each: every
+    // change then carries one rounding at the start's magnitude, however many flights.
+    let mut now = 0.0;
+    let mut changes = vec![start];
     for w in impacts.windows(2) {
         let flight = w[1] - w[0];
         now += dwell * flight;
-        changes.push(now);
+        changes.push(start + now);
         now += flight;
-        changes.push(now);
+        changes.push(start + now);
     }
     // The contact stays closed after the last resolved impact.
     Event {

@@ -8,7 +8,7 @@
 use std::hint::black_box;
 use std::time::Duration;
 
-use contact_bounce::{Method, Nodes};
+use contact_bounce::{catalogue, Method, Nodes, Tolerance, EXACT_MAX_IMPACTS};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use host_tests::grid::{grid, GridScene};
 use host_tests::reference::{simulate, DEFAULT_BUDGET};
@@ -34,7 +34,7 @@ fn tiers(c: &mut Criterion) {
                 .expect("scene in the grid")
         })
         .collect();
-    let tiers: [(&str, Method<f64>, Method<f32>); 6] = [
+    let tiers: [(&str, Method<f64>, Method<f32>); 7] = [
         ("closed", Method::Closed, Method::Closed),
         (
             "averaged N2",
@@ -65,6 +65,15 @@ fn tiers(c: &mut Criterion) {
                 max_impacts: 10_000_000,
             },
         ),
+        (
+            "exact",
+            Method::Exact {
+                max_impacts: EXACT_MAX_IMPACTS,
+            },
+            Method::Exact {
+                max_impacts: EXACT_MAX_IMPACTS,
+            },
+        ),
     ];
     for (tier, m64, m32) in tiers {
         let mut group = c.benchmark_group(format!("f64 {tier}"));
@@ -93,6 +102,25 @@ fn tiers(c: &mut Criterion) {
         );
     }
     group.finish();
+    catalogue_switches(c);
+}
+
+/// The eight catalogue switches (f64): the exact tier, and Auto at 1 %.
+fn catalogue_switches(c: &mut Criterion) {
+    let auto = Method::Auto(Tolerance::new(0.01).expect("valid"));
+    let exact = Method::Exact {
+        max_impacts: EXACT_MAX_IMPACTS,
+    };
+    for (label, method) in [("catalogue exact", exact), ("catalogue auto 1%", auto)] {
+        let mut group = c.benchmark_group(label);
+        for switch in catalogue::ALL {
+            let s = switch.scene::<f64>().expect("valid");
+            group.bench_with_input(BenchmarkId::from_parameter(switch.name), &s, |b, s| {
+                b.iter(|| black_box(s).predict(black_box(method)))
+            });
+        }
+        group.finish();
+    }
 }
 
 fn config() -> Criterion {

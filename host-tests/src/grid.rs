@@ -171,7 +171,7 @@ pub struct Row {
 
 /// The tiers checked, as methods.
 #[must_use]
-pub fn methods() -> [contact_bounce::Method<f64>; 6] {
+pub fn methods() -> [contact_bounce::Method<f64>; 7] {
     use contact_bounce::{Method, Nodes};
     [
         Method::Closed,
@@ -181,6 +181,9 @@ pub fn methods() -> [contact_bounce::Method<f64>; 6] {
         Method::Averaged(Nodes::N16),
         Method::Map {
             max_impacts: 10_000_000,
+        },
+        Method::Exact {
+            max_impacts: contact_bounce::EXACT_MAX_IMPACTS,
         },
     ]
 }

@@ -55,11 +55,37 @@ fn auto_takes_the_only_tier_that_fits() {
 }
 
 #[test]
-fn auto_says_when_it_cannot_promise() {
-    // The tactile dome at 0.1 %: nothing in physics.md sec. 6 promises that with damping.
+fn auto_answers_with_the_exact_tier_where_nothing_cheaper_promises() {
+    // The tactile dome at 0.1 %: no closed form, map or averaged figure of physics.md sec. 6
+    // promises that with damping; the exact tier does, at the float's rounding.
     let dome = catalogue::TACTILE_DOME.scene::<f64>().unwrap();
-    let tolerance = Tolerance::new(1e-3).unwrap();
-    let p = dome.predict(Method::Auto(tolerance));
+    for tol in [1e-3, 1e-9] {
+        let tolerance = Tolerance::new(tol).unwrap();
+        let p = dome.predict(Method::Auto(tolerance));
+        assert_eq!(p.tier, Tier::Exact);
+        assert!(p.promises(tolerance), "{p:?}");
+    }
+    // At 10 % a cheaper tier promises, and is taken.
+    let p = dome.predict(Method::Auto(Tolerance::new(0.1).unwrap()));
+    assert_ne!(p.tier, Tier::Exact);
+}
+
+#[test]
+fn auto_says_when_it_cannot_promise() {
+    // A relaxation kernel has no exact tier in the core: at 1e-6 nothing promises.
+    let scene = Scene::new(
+        Contact {
+            frequency: Frequency::Omega(1000.0),
+            offset: Offset::Delta(-1e-3),
+            restitution: Restitution::Coefficient(0.7),
+            closing_speed: 0.5,
+            threshold: Threshold::None,
+        },
+        contact_bounce::Hereditary::exponential(1e6, 1e-3).unwrap(),
+    )
+    .unwrap();
+    let tolerance = Tolerance::new(1e-6).unwrap();
+    let p = scene.predict(Method::Auto(tolerance));
     assert!(!p.promises(tolerance));
     // It still answers, with the smallest expected error on offer.
     let candidates = [
@@ -68,10 +94,13 @@ fn auto_says_when_it_cannot_promise() {
         Method::Map {
             max_impacts: 100_000,
         },
+        Method::Exact {
+            max_impacts: contact_bounce::EXACT_MAX_IMPACTS,
+        },
     ];
     let best = candidates
         .iter()
-        .filter_map(|m| dome.predict(*m).expected_error)
+        .filter_map(|m| scene.predict(*m).expected_error)
         .fold(f64::INFINITY, f64::min);
     assert_eq!(p.expected_error, Some(best));
 }

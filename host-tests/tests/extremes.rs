@@ -37,6 +37,7 @@ fn sweep<F: Float>() -> usize {
         Method::Averaged(Nodes::N2),
         Method::Averaged(Nodes::N8),
         Method::Map { max_impacts: 2_000 },
+        Method::Exact { max_impacts: 2_000 },
         Method::Auto(Tolerance::new(F::from_f64(0.01)).unwrap_or_else(|_| unreachable!())),
     ];
     for omega in [10.0, 1e3, 1e7] {

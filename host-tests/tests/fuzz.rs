@@ -237,6 +237,9 @@ fn check_scene<F: Float + std::fmt::Debug, D: contact_bounce::Dissipation<F>>(
         Method::Map {
             max_impacts: 10_000,
         },
+        Method::Exact {
+            max_impacts: 10_000,
+        },
         Method::Auto(auto),
     ] {
         let p = scene.predict(method);

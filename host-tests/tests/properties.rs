@@ -132,6 +132,7 @@ fn check<F: Float>(r: &Raw) -> Result<(), TestCaseError> {
                 Method::Closed,
                 Method::Averaged(Nodes::N4),
                 Method::Map { max_impacts: 500 },
+                Method::Exact { max_impacts: 500 },
                 Method::Auto(
                     Tolerance::new(F::from_f64(0.1))
                         .map_err(|e| TestCaseError::fail(e.to_string()))?,

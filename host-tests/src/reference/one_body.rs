@@ -6,13 +6,13 @@
 //! have ended); Brent's method finds it to rounding. To avoid cancellation the search works in
 //! y = x - Delta and, for short flights (Omega t <= 1.5), on y(t)/t summed as a Taylor series:
 //! the trivial root at t = 0 is divided out, so the tiny flights of a Zeno accumulation keep
-//! all their digits. Once the departure speed is below 1e-6 Omega |Delta| the remaining flights
+//! all their digits. Once the departure speed is below 1e-8 Omega |Delta| the remaining flights
 //! of a Zeno accumulation are summed as a geometric tail.
 
 use super::brent::brent;
 
 /// Departure speed (relative to Omega |Delta|) below which a Zeno accumulation is summed.
-pub const ZENO_TAIL: f64 = 1e-6;
+pub const ZENO_TAIL: f64 = 1e-8;
 /// Omega t below which y(t)/t is summed as a series.
 const SERIES_LIMIT: f64 = 1.5;
 

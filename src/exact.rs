@@ -1,0 +1,555 @@
+//! The exact tier: one body against a stop with restitution and viscous damping, solved impact
+//! by impact (physics.md sec. 1), with nothing approximated but the rounding of the float.
+//!
+//! Between impacts x'' + 2 zeta Omega x' + Omega^2 x = 0 is solved in closed form (under-,
+//! critically and over-damped). The next impact is the root of y = x - Delta in the bracket
+//! where y rises monotonically, from the first minimum of x to its next maximum; if y is still
+//! negative at that maximum, impacts have ended. The root is found by Newton steps started from
+//! the undamped flight (2 / Omega) atan2(a, -Omega Delta) and kept inside the bracket by
+//! bisection, at most [`ROOT_STEPS`] evaluations; on the catalogue switches it takes 3-5.
+//!
+//! Short flights (lambda t <= 1.5, lambda the fastest rate of the free motion) are evaluated
+//! from the Taylor series of y(t) / t about the departure, where the closed form would cancel:
+//! the trivial root at t = 0 is divided out, so the tiny flights of a Zeno accumulation keep
+//! their digits.
+//!
+//! A preload's Zeno tail is summed in closed form once the departure speed a is below
+//! [`Float::TAIL_CUTOFF`] Omega |Delta| and the damping's drift of the ratio of successive
+//! flights, d = 4 zeta a / (3 r Omega |Delta|), is below it too. To first order in a (the
+//! series of one flight gives t = (2a / (Omega^2 |Delta|)) (1 - 2 zeta a / (3 Omega |Delta|))
+//! and a return speed a (1 - 4 zeta a / (3 Omega |Delta|))), the rest lasts
+//! T = 2 a / (r Omega^2 |Delta|) (1 - d / 2); what is left out is of order d^2 and
+//! (a / (Omega |Delta|))^2 of the tail.
+//!
+//! Scenes without viscous damping, or with Delta = 0, have exact sums in closed form: the
+//! closed tier's, which this tier returns. The exact solution with a relaxation kernel is not in
+//! the core: there this tier answers with the averaged model (its [`Tier`] says so).
+
+use crate::averaged::Averaged;
+use crate::closed::{self, by_regime};
+use crate::mechanisms::Dissipation;
+use crate::prediction::{Approximations, Count, Prediction, Tier, Time};
+use crate::quadrature::{Compensated, Nodes};
+use crate::regime::Regime;
+use crate::{accuracy, Float, Scene};
+
+/// The exact tier's default cap on solved flights: past it the averaged model finishes the
+/// sum (flagged [`Approximations::MAP_CONTINUED_AVERAGED`]).
+pub const EXACT_MAX_IMPACTS: u32 = 100_000;
+
+/// Most evaluations of the motion spent on one flight's return (Newton steps, bisections and
+/// the bracket's own evaluations): with [`EXACT_MAX_IMPACTS`] it bounds the work of one
+/// prediction, see [`Scene::exact_work`].
+pub const ROOT_STEPS: u32 = 128;
+
+/// lambda t below which y(t) / t is summed as a series. Above it the closed form loses at most
+/// |Delta| / |y| ~ a few epsilon at the root (y rises at the return speed over a flight long
+/// enough for lambda t > 0.5).
+const SERIES_LIMIT: f64 = 0.5;
+/// Most terms of that series (at lambda t = 0.5 the terms fall below 1e-17 after ~16).
+const SERIES_TERMS: usize = 40;
+/// 1 / ((k + 1) k), the series' recurrence without a division per term.
+const RECIPROCALS: [f64; SERIES_TERMS] = {
+    let mut table = [0.0; SERIES_TERMS];
+    let mut k = 1;
+    while k < SERIES_TERMS {
+        #[allow(clippy::cast_precision_loss, clippy::as_conversions)]
+        let kf = k as f64;
+        table[k] = 1.0 / ((kf + 1.0) * kf);
+        k += 1;
+    }
+    table
+};
+/// Relative rounding the exact tier promises per solved flight, in units of epsilon: its
+/// expected error is this times epsilon times the flights solved (errors of successive
+/// departures compound at worst linearly). Measured against the host reference: see
+/// host-tests `against_reference`.
+const ROUNDING_PER_FLIGHT: f64 = 8.0;
+/// A clearance (the top of a flight relative to the stop) within this many epsilons of |Delta|
+/// decides a return by rounding: the count may be off by one.
+const GRAZING_EPSILONS: f64 = 64.0;
+
+fn c<F: Float>(x: f64) -> F {
+    F::from_f64(x)
+}
+
+/// The free motion's constants.
+#[derive(Debug, Clone, Copy)]
+enum Damping<F> {
+    /// zeta < 1: decay alpha = zeta Omega, frequency w = Omega sqrt(1 - zeta^2).
+    Under { alpha: F, w: F },
+    /// zeta = 1.
+    Critical,
+    /// zeta > 1: the two real rates (negative), slow and fast.
+    Over { slow: F, fast: F },
+}
+
+/// x'' + 2 zeta Omega x' + Omega^2 x = 0 between impacts at x = Delta.
+#[derive(Debug, Clone, Copy)]
+struct Oscillator<F> {
+    omega: F,
+    zeta: F,
+    delta: F,
+    damping: Damping<F>,
+    /// The fastest rate of the free motion (1/s).
+    lambda: F,
+}
+
+/// How a flight that leaves the stop ends.
+#[derive(Debug, Clone, Copy)]
+enum Landing<F> {
+    /// It returns after this time (s) at this speed (m/s); `grazing` when the return was
+    /// decided by rounding (its top within [`GRAZING_EPSILONS`] of the stop).
+    Returns { time: F, speed: F, grazing: bool },
+    /// It does not return (`grazing` as above).
+    Stays { grazing: bool },
+}
+
+impl<F: Float> Oscillator<F> {
+    fn new(omega: F, zeta: F, delta: F) -> Self {
+        let (damping, lambda) = if zeta < F::ONE {
+            let w = omega * ((F::ONE - zeta) * (F::ONE + zeta)).sqrt();
+            (
+                Damping::Under {
+                    alpha: zeta * omega,
+                    w,
+                },
+                omega,
+            )
+        } else if zeta == F::ONE {
+            (Damping::Critical, omega)
+        } else {
+            let root = ((zeta - F::ONE) * (zeta + F::ONE)).sqrt();
+            let fast = omega * (zeta + root);
+            (
+                Damping::Over {
+                    slow: -omega / (zeta + root),
+                    fast: -fast,
+                },
+                fast,
+            )
+        };
+        Self {
+            omega,
+            zeta,
+            delta,
+            damping,
+            lambda,
+        }
+    }
+
+    /// (y(t), y'(t)) in closed form for a flight leaving at speed `a`.
+    fn closed(&self, a: F, t: F) -> (F, F) {
+        let (omega, delta) = (self.omega, self.delta);
+        let v0 = -a;
+        let (x, v) = match self.damping {
+            Damping::Under { alpha, w } => {
+                let (s, co) = ((w * t).sin(), (w * t).cos());
+                let e = (-alpha * t).exp();
+                (
+                    e * (delta * co + (v0 + alpha * delta) / w * s),
+                    e * (v0 * co - (alpha * v0 + omega * omega * delta) / w * s),
+                )
+            }
+            Damping::Critical => {
+                let e = (-omega * t).exp();
+                let b = v0 + omega * delta;
+                (e * (delta + b * t), e * (v0 - omega * b * t))
+            }
+            Damping::Over { slow, fast } => {
+                let amp_slow = (v0 - fast * delta) / (slow - fast);
+                let amp_fast = delta - amp_slow;
+                let (es, ef) = ((slow * t).exp(), (fast * t).exp());
+                (
+                    amp_slow * es + amp_fast * ef,
+                    slow * amp_slow * es + fast * amp_fast * ef,
+                )
+            }
+        };
+        (x - delta, v)
+    }
+
+    /// (y(t) / t, y'(t)) from the Taylor series of y about the departure: c1 = -a,
+    /// c2 = (2 zeta Omega a - Omega^2 Delta) / 2,
+    /// c_{k+2} = -(2 zeta Omega (k + 1) c_{k+1} + Omega^2 c_k) / ((k + 2)(k + 1)).
+    fn series(&self, a: F, t: F) -> (F, F) {
+        let alpha2 = F::TWO * self.zeta * self.omega;
+        let w2 = self.omega * self.omega;
+        let (mut previous, mut current) = (-a, (alpha2 * a - w2 * self.delta) * F::HALF);
+        let mut over_t = previous;
+        let mut slope = previous;
+        let mut power = F::ONE;
+        let mut quiet = 0;
+        let mut kf = F::ONE;
+        for reciprocal in RECIPROCALS.iter().skip(2) {
+            kf += F::ONE;
+            power *= t;
+            let term = current * power;
+            over_t += term;
+            slope += kf * term;
+            if kf * term.abs() <= F::EPSILON * c::<F>(0.01) * (kf * over_t.abs()).max(slope.abs()) {
+                quiet += 1;
+                if quiet >= 2 {
+                    break;
+                }
+            } else {
+                quiet = 0;
+            }
+            let next = -(alpha2 * kf * current + w2 * previous) * F::from_f64(*reciprocal);
+            previous = current;
+            current = next;
+        }
+        (over_t, slope)
+    }
+
+    /// (y(t), y'(t)): the series for short times, the closed form beyond.
+    fn eval(&self, a: F, t: F) -> (F, F) {
+        if self.lambda * t <= c(SERIES_LIMIT) {
+            let (over_t, slope) = self.series(a, t);
+            (over_t * t, slope)
+        } else {
+            self.closed(a, t)
+        }
+    }
+
+    /// The first minimum of x after leaving the stop at `a` (x turns before any return).
+    fn first_minimum(&self, a: F) -> Option<F> {
+        let (omega, delta) = (self.omega, self.delta);
+        match self.damping {
+            Damping::Under { alpha, w } => {
+                let k = (omega * omega * delta - alpha * a) / w;
+                Some(a.atan2(-k) / w)
+            }
+            Damping::Critical => {
+                let den = omega * (a - omega * delta);
+                (den > F::ZERO).then(|| a / den)
+            }
+            Damping::Over { slow, fast } => {
+                let amp_slow = (-a - fast * delta) / (slow - fast);
+                let amp_fast = delta - amp_slow;
+                let ratio = -fast * amp_fast / (slow * amp_slow);
+                (ratio > F::ONE).then(|| ratio.ln() / (slow - fast))
+            }
+        }
+    }
+
+    /// True when `y` is within rounding of the stop.
+    fn grazes(&self, y: F) -> bool {
+        y.abs() <= c::<F>(GRAZING_EPSILONS) * F::EPSILON * self.delta.abs()
+    }
+
+    /// A preload's return by Newton steps alone, from a guess within a few percent (the
+    /// previous flight scaled as the undamped flights scale): `None` when a step leaves 10 %
+    /// of the guess, the speed is not rising or 6 steps do not settle; the bracketed search
+    /// then decides. (A preload always returns: x swings through rest, beyond the stop.)
+    fn newton(&self, a: F, guess: F) -> Option<Landing<F>> {
+        let (low, high) = (guess * c::<F>(0.9), guess * c::<F>(1.1));
+        let mut t = guess;
+        for _ in 0..6 {
+            let (y, v) = self.eval(a, t);
+            if !(v > F::ZERO) {
+                return None;
+            }
+            let next = t - y / v;
+            if !(next > low && next < high) {
+                return None;
+            }
+            if (next - t).abs() <= F::TWO * F::EPSILON * t {
+                return Some(Landing::Returns {
+                    time: next,
+                    speed: v,
+                    grazing: false,
+                });
+            }
+            t = next;
+        }
+        None
+    }
+
+    /// The flight leaving the stop at speed `a` > 0.
+    fn land(&self, a: F) -> Landing<F> {
+        let Some(low) = self.first_minimum(a) else {
+            return Landing::Stays { grazing: false };
+        };
+        let mut steps = 1;
+        let high = if let Damping::Under { w, .. } = self.damping {
+            low + F::PI / w
+        } else {
+            if self.delta >= F::ZERO {
+                // Over- or critically damped above the rest position: no return.
+                return Landing::Stays { grazing: false };
+            }
+            // x creeps back to rest through the stop: double until y >= 0.
+            let mut high = (low + low).max(F::MIN_POSITIVE);
+            loop {
+                if steps >= ROOT_STEPS {
+                    return Landing::Stays { grazing: true };
+                }
+                steps += 1;
+                if self.eval(a, high).0 >= F::ZERO {
+                    break high;
+                }
+                high = high + high;
+            }
+        };
+        let top = self.eval(a, high).0;
+        let grazing = self.grazes(top);
+        if top < F::ZERO {
+            return Landing::Stays { grazing };
+        }
+        let (mut low, mut high) = (low, high);
+        // The undamped flight, inside the bracket.
+        let guess = F::TWO / self.omega * a.atan2(-self.omega * self.delta);
+        let mut t = if guess > low && guess < high {
+            guess
+        } else {
+            low + (high - low) * F::HALF
+        };
+        let mut speed = F::ZERO;
+        while steps < ROOT_STEPS {
+            steps += 1;
+            let (y, v) = self.eval(a, t);
+            speed = v;
+            if y == F::ZERO {
+                break;
+            }
+            if y < F::ZERO {
+                low = t;
+            } else {
+                high = t;
+            }
+            let newton = t - y / v;
+            let next = if v > F::ZERO && newton > low && newton < high {
+                newton
+            } else {
+                low + (high - low) * F::HALF
+            };
+            let settled = (next - t).abs() <= F::TWO * F::EPSILON * t
+                || high - low <= F::TWO * F::EPSILON * high;
+            t = next;
+            if settled {
+                speed = self.eval(a, t).1;
+                break;
+            }
+        }
+        if speed > F::ZERO {
+            Landing::Returns {
+                time: t,
+                speed,
+                grazing,
+            }
+        } else {
+            Landing::Stays { grazing: true }
+        }
+    }
+}
+
+/// Where the iteration stopped.
+enum Stop<F> {
+    /// The last flight did not return.
+    Ended,
+    /// A Zeno tail of this duration (s) remains.
+    Tail { time: F, error: F },
+    /// Below the threshold in an endless regime.
+    BelowThreshold,
+    /// The cap: the averaged model finishes from this generating impulse (m/s).
+    Capped(F),
+}
+
+impl<F: Float, D: Dissipation<F>> Scene<F, D> {
+    /// The most evaluations of the motion [`Method::Exact`](crate::Method::Exact) spends on
+    /// this scene with `max_impacts` (each a few `exp`, `sin`, `cos` or a series of at most
+    /// 60 terms), before the averaged model finishes what is left: known before calling.
+    /// `None` where the tier evaluates no flight (the closed tier's exact sums answer, or the
+    /// averaged model where a kernel acts).
+    #[must_use]
+    pub fn exact_work(&self, max_impacts: u32) -> Option<u64> {
+        let d = self.dissipation();
+        let solved = d.dissipates() && !d.has_kernel() && self.delta() != F::ZERO;
+        solved.then(|| (u64::from(max_impacts) + 1) * u64::from(ROOT_STEPS))
+    }
+}
+
+/// The exact tier's prediction, solving at most `max_impacts` flights.
+#[allow(clippy::too_many_lines)] // one loop and its hand-over; splitting it would hide the state
+pub(crate) fn predict<F: Float, D: Dissipation<F>>(
+    scene: &Scene<F, D>,
+    max_impacts: u32,
+) -> Prediction<F> {
+    if let Some(p) = by_regime(scene) {
+        return p;
+    }
+    let dissipation = scene.dissipation();
+    if dissipation.has_kernel() {
+        return Averaged::new(scene, Nodes::N20).predict();
+    }
+    if !dissipation.dissipates() || scene.delta() == F::ZERO {
+        return closed::predict(scene);
+    }
+    let omega = scene.omega();
+    let delta = scene.delta();
+    let zeta = dissipation.damping_ratio();
+    let loss = scene.loss();
+    let restitution = scene.restitution();
+    let oscillator = Oscillator::new(omega, zeta, delta);
+    let scale = omega * delta.abs();
+    let zeno = scene.regime() == Regime::ZenoAccumulation;
+    let endless = scene.regime() == Regime::Endless;
+    let threshold = scene.threshold_impulse();
+    let impulse = |v: F| (F::ONE + restitution) * v;
+
+    let mut time = Compensated::new();
+    let mut speed = scene.closing_speed();
+    let mut solved: u32 = 0;
+    let mut last_above = F::ZERO;
+    let mut above: u32 = 1;
+    let mut still_above = true;
+    let mut grazing = false;
+    // The last flight solved, and the share of the generating impulse lost over it.
+    let mut last_flight = F::ZERO;
+    let mut last_decay = F::ONE;
+    // The last flight and the undamped flight of its departure: the next guess.
+    let mut previous: Option<(F, F)> = None;
+    let preload = delta < F::ZERO;
+    let stop = loop {
+        // R v as v - r v: keeps the loss where R rounds to 1.
+        let departure = speed - loss * speed;
+        if zeno && departure <= F::TAIL_CUTOFF * scale && !(still_above && threshold.is_some()) {
+            let small = departure / scale;
+            let drift = c::<F>(4.0 / 3.0) * zeta * small / loss;
+            if drift <= F::TAIL_CUTOFF {
+                let g = omega * scale;
+                let tail = F::TWO * departure / (loss * g) * (F::ONE - drift * F::HALF);
+                break Stop::Tail {
+                    time: tail,
+                    error: tail * c::<F>(4.0) * (drift * drift + small * small),
+                };
+            }
+        }
+        if departure < F::MIN_POSITIVE {
+            break Stop::Ended;
+        }
+        if solved >= max_impacts {
+            break Stop::Capped(F::TWO * departure);
+        }
+        let undamped = F::TWO / omega * departure.atan2(-omega * delta);
+        let guessed = match previous {
+            Some((flight, undamped_before)) if preload && undamped_before > F::ZERO => {
+                oscillator.newton(departure, flight * (undamped / undamped_before))
+            }
+            _ => None,
+        };
+        let landing = guessed.unwrap_or_else(|| oscillator.land(departure));
+        match landing {
+            Landing::Stays { grazing: g } => {
+                grazing |= g;
+                break Stop::Ended;
+            }
+            Landing::Returns {
+                time: t,
+                speed: v,
+                grazing: g,
+            } => {
+                grazing |= g;
+                time.add(t);
+                previous = Some((t, undamped));
+                last_flight = t;
+                last_decay = (departure - restitution * v) / departure;
+                speed = v;
+                solved += 1;
+                if still_above {
+                    if threshold.is_some_and(|end| impulse(v) < end) {
+                        still_above = false;
+                        if endless {
+                            break Stop::BelowThreshold;
+                        }
+                    } else {
+                        last_above = time.value();
+                        above = solved + 1;
+                    }
+                }
+            }
+        }
+    };
+    let count = F::from_u32(solved) + F::ONE;
+    let elapsed = time.value();
+    let mut approximations = accuracy::reduction_flags(scene);
+    let mut last_above_time = Time::At(last_above);
+    let mut impacts_above = Count::Finite(F::from_u32(above));
+    let mut rest_error = F::ZERO;
+    let (end_time, impacts_total) = match stop {
+        // An endless regime never ends: where the float loses the next return (an impulse
+        // below its range, a root lost in rounding), that impact is below any threshold.
+        Stop::Ended if endless => (Time::Never, Count::Infinite),
+        Stop::Ended => (Time::At(elapsed), Count::Finite(count)),
+        Stop::BelowThreshold => (Time::Never, Count::Infinite),
+        Stop::Tail { time: tail, error } => {
+            rest_error = error;
+            (Time::At(elapsed + tail), Count::Infinite)
+        }
+        Stop::Capped(j) => {
+            // Past the cap the impulse falls by a share `last_decay` per flight at most:
+            // averaging over flights that change this little is accurate to about that share
+            // (taken 4 times), and the averaged count of a threshold's crossing can be off by
+            // one flight.
+            approximations = approximations.with(Approximations::MAP_CONTINUED_AVERAGED);
+            let averaged = Averaged::new(scene, Nodes::N8);
+            let figure = |dt: F| dt * c::<F>(4.0) * last_decay + last_flight;
+            if still_above {
+                if let Some(j_end) = scene.threshold_generating() {
+                    if let (Time::At(dt), Count::Finite(dn), _) = averaged.fall(j, j_end) {
+                        last_above_time = Time::At(elapsed + dt);
+                        impacts_above = Count::Finite(count + dn);
+                        rest_error = figure(dt);
+                    }
+                }
+            }
+            if endless {
+                (Time::Never, Count::Infinite)
+            } else {
+                let (dt, dn, _) = averaged.fall(j, F::ZERO);
+                rest_error = dt.seconds().map_or(F::MAX, figure);
+                (
+                    dt.seconds()
+                        .map_or(Time::Never, |dt| Time::At(elapsed + dt)),
+                    dn.value()
+                        .map_or(Count::Infinite, |dn| Count::Finite(count + dn)),
+                )
+            }
+        }
+    };
+    if threshold.is_none() {
+        last_above_time = end_time;
+        impacts_above = impacts_total;
+    }
+    // Rounding compounds at worst linearly over the flights solved; a tail or the averaged
+    // rest adds its own error in proportion to its share of the bounce time.
+    let rounding = c::<F>(ROUNDING_PER_FLIGHT) * F::EPSILON * count;
+    let total = end_time
+        .seconds()
+        .or(last_above_time.seconds())
+        .unwrap_or(F::ZERO);
+    let share = if total > F::ZERO {
+        (rest_error / total).min(F::MAX)
+    } else {
+        F::ZERO
+    };
+    let expected = if grazing || rest_error == F::MAX {
+        None
+    } else {
+        accuracy::with_reduction(scene, Some(rounding + share))
+    };
+    if expected.is_none() {
+        approximations = approximations.with(Approximations::OUTSIDE_VALIDITY);
+    }
+    Prediction {
+        regime: scene.regime(),
+        end_time,
+        last_above_time,
+        impacts_above,
+        impacts_total,
+        tier: Tier::Exact,
+        approximations,
+        expected_error: expected,
+    }
+}
