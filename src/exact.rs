@@ -53,9 +53,12 @@ const RECIPROCALS: [f64; SERIES_TERMS] = {
     let mut table = [0.0; SERIES_TERMS];
     let mut k = 1;
     while k < SERIES_TERMS {
-        #[allow(clippy::cast_precision_loss, clippy::as_conversions)]
+        #[allow(clippy::cast_precision_loss, clippy::as_conversions)] // k < 40: exact
         let kf = k as f64;
-        table[k] = 1.0 / ((kf + 1.0) * kf);
+        #[allow(clippy::indexing_slicing)] // k < SERIES_TERMS; no `get_mut` in a const block
+        {
+            table[k] = 1.0 / ((kf + 1.0) * kf);
+        }
         k += 1;
     }
     table
@@ -247,7 +250,7 @@ impl<F: Float> Oscillator<F> {
         let mut t = guess;
         for _ in 0..6 {
             let (y, v) = self.eval(a, t);
-            if !(v > F::ZERO) {
+            if v <= F::ZERO || v.is_nan() {
                 return None;
             }
             let next = t - y / v;

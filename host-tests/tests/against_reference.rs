@@ -97,7 +97,10 @@ fn the_exact_tier_reproduces_the_reference_to_1e_9() {
     // flights (Tier::Exact) and did not hand a rest to the averaged model past its cap.
     let mut worst = (0.0_f64, String::new());
     let mut solved = 0;
-    let scenes: Vec<_> = grid().into_iter().chain(off_grid(300, 0x0e4a_c7)).collect();
+    let scenes: Vec<_> = grid()
+        .into_iter()
+        .chain(off_grid(300, 0x000e_4ac7))
+        .collect();
     for scene in &scenes {
         let Ok(core) = scene.core() else { continue };
         let p = core.predict(Method::Exact {
