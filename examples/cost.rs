@@ -12,7 +12,9 @@ mod debouncers;
 
 #[cfg(target_os = "none")]
 mod firmware {
-    use contact_bounce::{catalogue, Method, Nodes, Tolerance, DEFAULT_MAX_IMPACTS};
+    use contact_bounce::{
+        catalogue, Method, Nodes, Tolerance, DEFAULT_MAX_IMPACTS, EXACT_MAX_IMPACTS,
+    };
     use core::hint::black_box;
     use cortex_m as _;
     use cortex_m_semihosting::debug;
@@ -40,6 +42,9 @@ mod firmware {
                 Method::Averaged(Nodes::N8),
                 Method::Map {
                     max_impacts: DEFAULT_MAX_IMPACTS,
+                },
+                Method::Exact {
+                    max_impacts: EXACT_MAX_IMPACTS,
                 },
             ] {
                 black_box(scene.predict(black_box(method)));

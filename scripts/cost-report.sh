@@ -42,7 +42,7 @@ declare -A qemu=(
   [thumbv7m-none-eabi]="-cpu cortex-m3 -machine lm3s6965evb"
   [thumbv7em-none-eabihf]="-cpu cortex-m4 -machine mps2-an386"
 )
-examples=(predict debounce_trace cost cost_learner size_restitution size_viscous size_hereditary size_tier_closed size_tier_averaged size_tier_map size_tier_auto)
+examples=(predict debounce_trace cost cost_learner size_restitution size_viscous size_hereditary size_tier_closed size_tier_averaged size_tier_map size_tier_exact size_tier_auto)
 for target in thumbv6m-none-eabi thumbv7m-none-eabi thumbv7em-none-eabihf; do
   cargo build --quiet --release --target "$target" $(printf -- '--example %s ' "${examples[@]}")
   for example in "${examples[@]}"; do
@@ -61,7 +61,7 @@ if rustup toolchain list | grep -q '^nightly'; then
     read -r text data bss _ < <(avr-size "target/avr-none/release/examples/$example.elf" | tail -n 1)
     echo "| avr-none (Uno) | $example | $text | $data | $bss |" >> "$out"
   done
-  for example in uno_cost_closed_map uno_cost_averaged; do
+  for example in uno_cost_closed_map uno_cost_averaged uno_cost_exact; do
     over=$(cargo +nightly build --release --example "$example" --target avr-none -Zbuild-std=core 2>&1 \
       | sed -n "s/.*region \`text' overflowed by \([0-9]*\) bytes.*/\1/p" | head -n 1 || true)
     if [ -n "$over" ]; then
@@ -84,8 +84,8 @@ fi
   echo "the marker's few instructions). Debouncers: per sample, net of the sample loop (1000 samples of a"
   echo "bouncing input; idle: 1000 samples of a settled contact, no edge in progress)."
   echo
-  echo "| target | validate scene | closed | averaged N4 | averaged N8 | map | auto (10 %) | debouncer (ours) | debouncr | learner | idle: ours / learner |"
-  echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+  echo "| target | validate scene | closed | averaged N4 | averaged N8 | map | exact | auto (10 %) | debouncer (ours) | debouncr | learner | idle: ours / learner |"
+  echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 } >> "$out"
 for target in thumbv6m-none-eabi thumbv7m-none-eabi thumbv7em-none-eabihf; do
   elf="target/$target/release/examples/cost"
@@ -94,8 +94,8 @@ for target in thumbv6m-none-eabi thumbv7m-none-eabi thumbv7em-none-eabihf; do
   timeout 600 qemu-system-arm ${qemu[$target]} -nographic -semihosting-config enable=on,target=native \
     -d exec,nochain -singlestep -D "$tmp/trace" -kernel "$elf"
   mapfile -t c < <(awk -v mark="$mark" '{ if (match($0, /\[[0-9a-f]+\/([0-9a-f]+)\//)) { n++; if (substr($0, RSTART+10, 8) == mark) { if (last) print n - last; last = n } } }' "$tmp/trace")
-  # c: validate, closed, N4, N8, map, auto, setup, ours, setup, debouncr, loop
-  ours=$(( (c[7] - c[10]) )); theirs=$(( (c[9] - c[10]) ))
+  # c: validate, closed, N4, N8, map, exact, auto, setup, ours, setup, debouncr, loop
+  ours=$(( (c[8] - c[11]) )); theirs=$(( (c[10] - c[11]) ))
   # The learner apart (examples/cost_learner.rs): setup, learner, ours idle, learner idle,
   # idle loop, loop.
   elf="target/$target/release/examples/cost_learner"
@@ -106,7 +106,7 @@ for target in thumbv6m-none-eabi thumbv7m-none-eabi thumbv7em-none-eabihf; do
   mapfile -t l < <(awk -v mark="$mark" '{ if (match($0, /\[[0-9a-f]+\/([0-9a-f]+)\//)) { n++; if (substr($0, RSTART+10, 8) == mark) { if (last) print n - last; last = n } } }' "$tmp/trace")
   learner=$(( l[1] - l[5] )); idle=$(( l[2] - l[4] )); learner_idle=$(( l[3] - l[4] ))
   per() { awk "BEGIN { printf \"%.1f\", $1 / 1000 }"; }
-  echo "| $target | ${c[0]} | ${c[1]} | ${c[2]} | ${c[3]} | ${c[4]} | ${c[5]} | $(per $ours) | $(per $theirs) | $(per $learner) | $(per $idle) / $(per $learner_idle) |" >> "$out"
+  echo "| $target | ${c[0]} | ${c[1]} | ${c[2]} | ${c[3]} | ${c[4]} | ${c[5]} | ${c[6]} | $(per $ours) | $(per $theirs) | $(per $learner) | $(per $idle) / $(per $learner_idle) |" >> "$out"
   if [ "$learner_idle" -gt $(( 2 * idle )) ]; then
     echo "FAIL: $target: the learner's idle path costs more than twice our debouncer's ($learner_idle > 2 x $idle per 1000)" >&2
     failed=1
@@ -144,7 +144,7 @@ if [ "$uno" = 1 ]; then
     echo "## Exact cycles on the Arduino Uno (libsimavr, 16 MHz, tactile dome in f32)"
     echo
     echo "Cycles between consecutive calls of \`cost_mark\` in \`examples/uno_cost.rs\`. The map's full"
-    echo "prediction, the closed tier and the averaged tier do not fit the Uno beside the rest (sizes above):"
+    echo "prediction, the closed, averaged and exact tiers do not fit the Uno beside the rest (sizes above):"
     echo "on the Uno, walk the map with \`MapImpacts\` or fix the window at compile time."
     echo
     echo "| validate scene | map walk + Zeno tail | debouncer (ours), per sample | debouncr, per sample | learner, per sample | idle: ours / learner, per sample |"

@@ -8,7 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 targets=(thumbv6m-none-eabi thumbv7em-none-eabihf)
-examples=(size_restitution size_viscous size_hereditary size_tier_closed size_tier_averaged size_tier_map size_tier_auto)
+examples=(size_restitution size_viscous size_hereditary size_tier_closed size_tier_averaged size_tier_map size_tier_exact size_tier_auto)
 llvm_bin="$(rustc --print sysroot)/lib/rustlib/$(rustc -vV | sed -n 's/^host: //p')/bin"
 size="$llvm_bin/llvm-size"
 [ -x "$size" ] || { echo "llvm-size missing: rustup component add llvm-tools" >&2; exit 1; }

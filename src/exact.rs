@@ -6,7 +6,9 @@
 //! where y rises monotonically, from the first minimum of x to its next maximum; if y is still
 //! negative at that maximum, impacts have ended. The root is found by Newton steps started from
 //! the undamped flight (2 / Omega) atan2(a, -Omega Delta) and kept inside the bracket by
-//! bisection, at most [`ROOT_STEPS`] evaluations; on the catalogue switches it takes 3-5.
+//! bisection, at most [`ROOT_STEPS`] evaluations. A preload's later flights start instead from
+//! the previous flight, scaled as the undamped flights scale, and take Halley steps (y'' is
+//! given by the equation of motion): two evaluations per flight on the catalogue switches.
 //!
 //! Short flights (lambda t <= 1.5, lambda the fastest rate of the free motion) are evaluated
 //! from the Taylor series of y(t) / t about the departure, where the closed form would cancel:
@@ -74,6 +76,18 @@ const GRAZING_EPSILONS: f64 = 64.0;
 
 fn c<F: Float>(x: f64) -> F {
     F::from_f64(x)
+}
+
+/// (sin x, cos x) for the phases of one flight (0 <= x <= ~3 pi, the bracket's end): reduced by
+/// whole turns and a half turn into [-pi, pi) and summed by [`Float::sin_within_pi`], so the
+/// tier links no libm `sin`/`cos` (their range reduction alone is several KB of flash). Absolute
+/// error a few ULP of the phase.
+fn sin_cos_small<F: Float>(x: F) -> (F, F) {
+    let turn = F::TWO * F::PI;
+    let turns = (x / turn).floor();
+    // y = x - pi - whole turns, in [-pi, pi): sin x = -sin y, cos x = -cos y.
+    let y = x - turns * turn - F::PI;
+    (-y.sin_within_pi(), -y.cos_within_pi())
 }
 
 /// The free motion's constants.
@@ -147,7 +161,7 @@ impl<F: Float> Oscillator<F> {
         let v0 = -a;
         let (x, v) = match self.damping {
             Damping::Under { alpha, w } => {
-                let (s, co) = ((w * t).sin(), (w * t).cos());
+                let (s, co) = sin_cos_small(w * t);
                 let e = (-alpha * t).exp();
                 (
                     e * (delta * co + (v0 + alpha * delta) / w * s),
@@ -241,26 +255,43 @@ impl<F: Float> Oscillator<F> {
         y.abs() <= c::<F>(GRAZING_EPSILONS) * F::EPSILON * self.delta.abs()
     }
 
-    /// A preload's return by Newton steps alone, from a guess within a few percent (the
-    /// previous flight scaled as the undamped flights scale): `None` when a step leaves 10 %
-    /// of the guess, the speed is not rising or 6 steps do not settle; the bracketed search
-    /// then decides. (A preload always returns: x swings through rest, beyond the stop.)
-    fn newton(&self, a: F, guess: F) -> Option<Landing<F>> {
+    /// A preload's return by Halley steps alone (y'' comes free from the equation of motion,
+    /// and the convergence is cubic), from a guess within a few percent (the previous flight
+    /// scaled as the undamped flights scale). Once a step is below a tenth of
+    /// [`Float::TAIL_CUTOFF`] (about the cube root of epsilon) of t, the next iterate is exact
+    /// to rounding, and so is the return speed carried to it by its Taylor series to second
+    /// order: no further evaluation. `None` when a step leaves 10 % of the guess, the speed is
+    /// not rising or 6 steps do not settle; the bracketed search then decides. (A preload
+    /// always returns: x swings through rest, beyond the stop.)
+    fn halley(&self, a: F, guess: F) -> Option<Landing<F>> {
         let (low, high) = (guess * c::<F>(0.9), guess * c::<F>(1.1));
+        let damping = F::TWO * self.zeta * self.omega;
+        let w2 = self.omega * self.omega;
+        let settled = F::TAIL_CUTOFF * c::<F>(0.1);
         let mut t = guess;
         for _ in 0..6 {
             let (y, v) = self.eval(a, t);
             if v <= F::ZERO || v.is_nan() {
                 return None;
             }
-            let next = t - y / v;
+            let acceleration = -damping * v - w2 * (y + self.delta);
+            let newton = y / v;
+            let denominator = F::ONE - newton * acceleration / (F::TWO * v);
+            let step = if denominator > F::HALF {
+                newton / denominator
+            } else {
+                newton
+            };
+            let next = t - step;
             if !(next > low && next < high) {
                 return None;
             }
-            if (next - t).abs() <= F::TWO * F::EPSILON * t {
+            if step.abs() <= settled * t {
+                let h = next - t;
+                let jerk = -damping * acceleration - w2 * v;
                 return Some(Landing::Returns {
                     time: next,
-                    speed: v,
+                    speed: v + acceleration * h + jerk * h * h * F::HALF,
                     grazing: false,
                 });
             }
@@ -438,7 +469,7 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
         let undamped = F::TWO / omega * departure.atan2(-omega * delta);
         let guessed = match previous {
             Some((flight, undamped_before)) if preload && undamped_before > F::ZERO => {
-                oscillator.newton(departure, flight * (undamped / undamped_before))
+                oscillator.halley(departure, flight * (undamped / undamped_before))
             }
             _ => None,
         };

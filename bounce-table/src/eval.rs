@@ -1,6 +1,7 @@
 //! `bounce-table eval`: JSON Lines scenes on stdin, one JSON result per line on stdout.
 //!
-//! Options: `--method exact|map|averaged|closed|auto` (default auto), `--tolerance X` (for
+//! Options: `--method exact|exact-tier|map|averaged|closed|auto` (default auto; `exact` is the
+//! host's reference, `exact-tier` the core's exact tier), `--tolerance X` (for
 //! auto, default 0.01), `--precision f32|f64` (core tiers, default f64), `--nodes N` (averaged,
 //! default 8). A bad line gets an error object naming the line and the field; the other lines
 //! still run, and the exit status is 1 if any line failed.
@@ -22,6 +23,8 @@ use crate::scene_input::{FieldError, SceneInput, Spring};
 pub enum Method {
     /// The exact reference (host only).
     Exact,
+    /// The core's exact tier (`Method::Exact`, the same in firmware).
+    Tier,
     /// The semi-discrete map.
     Map,
     /// The averaged model.
@@ -36,6 +39,7 @@ impl Method {
     fn name(self) -> &'static str {
         match self {
             Self::Exact => "exact",
+            Self::Tier => "exact-tier",
             Self::Map => "map",
             Self::Averaged => "averaged",
             Self::Closed => "closed",
@@ -75,13 +79,14 @@ pub fn options(args: &[String]) -> Result<Options, String> {
             "--method" => {
                 out.method = match value("--method")?.as_str() {
                     "exact" => Method::Exact,
+                    "exact-tier" => Method::Tier,
                     "map" => Method::Map,
                     "averaged" => Method::Averaged,
                     "closed" => Method::Closed,
                     "auto" => Method::Auto,
                     other => {
                         return Err(format!(
-                            "--method: '{other}' is not one of exact, map, averaged, closed, auto"
+                            "--method: '{other}' is not one of exact, exact-tier, map, averaged, closed, auto"
                         ))
                     }
                 }
@@ -148,6 +153,9 @@ fn core_result<F: Float>(input: &SceneInput, options: &Options) -> Result<Value,
         },
         Method::Averaged => CoreMethod::Averaged(options.nodes),
         Method::Closed => CoreMethod::Closed,
+        Method::Tier => CoreMethod::Exact {
+            max_impacts: contact_bounce::EXACT_MAX_IMPACTS,
+        },
         Method::Auto | Method::Exact => CoreMethod::Auto(
             Tolerance::new(F::from_f64(options.tolerance)).map_err(FieldError::from)?,
         ),

@@ -42,7 +42,7 @@ macro_rules! outln {
 }
 
 const USAGE: &str = "usage: bounce-table [OPTIONS] [SCENE_FILE]
-       bounce-table eval [--method exact|map|averaged|closed|auto] [--tolerance X]
+       bounce-table eval [--method exact|exact-tier|map|averaged|closed|auto] [--tolerance X]
                          [--precision f32|f64] [--nodes N] < scenes.jsonl
        bounce-table replay [--period S] [--split F] [--time-scale X] [--switch-type TYPE]
                            [--format table|markdown|json|curve] [--plot DIR]

@@ -27,6 +27,12 @@ fn methods<F: contact_bounce::Float>() -> Vec<(&'static str, Method<F>)> {
                 max_impacts: 10_000_000,
             },
         ),
+        (
+            "exact",
+            Method::Exact {
+                max_impacts: contact_bounce::EXACT_MAX_IMPACTS,
+            },
+        ),
     ]
 }
 
