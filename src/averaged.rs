@@ -212,7 +212,9 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
     }
 
     fn predict_unchecked(&self) -> Prediction<F> {
-        if let Some(p) = by_regime(self.scene) {
+        if let Some(p) =
+            by_regime(self.scene).or_else(|| crate::exact::ends_at_first_contact(self.scene))
+        {
             return p;
         }
         let start = self.scene.start_impulse();

@@ -407,7 +407,7 @@ pub(crate) fn by_regime<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Opt
 /// or Delta = 0 without a kernel), else the closed forms of sec. 5 (t_b1v, t_b2r and the
 /// small-impulse asymptote they come from).
 pub(crate) fn predict<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Prediction<F> {
-    if let Some(p) = by_regime(scene) {
+    if let Some(p) = by_regime(scene).or_else(|| crate::exact::ends_at_first_contact(scene)) {
         return p;
     }
     let dissipation = scene.dissipation();

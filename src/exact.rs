@@ -378,6 +378,43 @@ impl<F: Float> Oscillator<F> {
     }
 }
 
+/// A gap's bounce that ends at the first contact: the first flight (leaving at R v0) does not
+/// come back to the stop, decided exactly by the top of its first swing (one `atan2`, one `exp`
+/// and a sine: no root is solved). Then every tier answers exactly: one impact, at t = 0.
+/// `None` otherwise, and where it does not apply (no viscous damping, a kernel, Delta <= 0).
+pub(crate) fn ends_at_first_contact<F: Float, D: Dissipation<F>>(
+    scene: &Scene<F, D>,
+) -> Option<Prediction<F>> {
+    let dissipation = scene.dissipation();
+    // (`dissipates` first: a scene type without damping links none of this.)
+    if !dissipation.dissipates() || scene.regime() != Regime::LastImpact || dissipation.has_kernel()
+    {
+        return None;
+    }
+    let zeta = dissipation.damping_ratio();
+    let oscillator = Oscillator::new(scene.omega(), zeta, scene.delta());
+    let departure = scene.closing_speed() - scene.loss() * scene.closing_speed();
+    let Damping::Under { w, .. } = oscillator.damping else {
+        return None; // over-damped gaps are the single-impact regime
+    };
+    let low = oscillator.first_minimum(departure)?;
+    let top = oscillator.eval(departure, low + F::PI / w).0;
+    if top >= F::ZERO || oscillator.grazes(top) {
+        return None;
+    }
+    let one = Count::Finite(F::ONE);
+    Some(Prediction {
+        regime: scene.regime(),
+        end_time: Time::At(F::ZERO),
+        last_above_time: Time::At(F::ZERO),
+        impacts_above: one,
+        impacts_total: one,
+        tier: Tier::Regime,
+        approximations: accuracy::reduction_flags(scene),
+        expected_error: accuracy::with_reduction(scene, Some(F::ZERO)),
+    })
+}
+
 /// Where the iteration stopped.
 enum Stop<F> {
     /// The last flight did not return.
@@ -410,7 +447,7 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
     scene: &Scene<F, D>,
     max_impacts: u32,
 ) -> Prediction<F> {
-    if let Some(p) = by_regime(scene) {
+    if let Some(p) = by_regime(scene).or_else(|| ends_at_first_contact(scene)) {
         return p;
     }
     let dissipation = scene.dissipation();

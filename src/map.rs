@@ -187,7 +187,7 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
     scene: &Scene<F, D>,
     max_impacts: u32,
 ) -> Prediction<F> {
-    if let Some(p) = by_regime(scene) {
+    if let Some(p) = by_regime(scene).or_else(|| crate::exact::ends_at_first_contact(scene)) {
         return p;
     }
     let orbit = scene.orbit();

@@ -184,6 +184,48 @@ fn the_exact_tier_in_f32_keeps_its_expected_error() {
     );
 }
 
+#[test]
+fn a_gap_that_ends_at_the_first_contact_is_exact_in_every_tier() {
+    // zeta = 0.5, R = 0.5 in a gap: the first flight falls short of the stop, so the bounce is
+    // one impact at t = 0. The closed forms (t_b2r) and the averaged model used to report a
+    // later end (1.125 and 1.08 in the units of the issue), and no expected error.
+    use contact_bounce::{Contact, Frequency, Offset, Restitution, Scene, Threshold, Viscous};
+    use host_tests::reference::{simulate, OneBody, DEFAULT_BUDGET};
+    for (zeta, v0) in [(0.5, 0.2), (0.3, 0.05), (0.9, 1.0)] {
+        let reference = OneBody {
+            omega: 1000.0,
+            delta: 1e-3,
+            restitution: 0.5,
+            zeta,
+            closing_speed: v0,
+            threshold: None,
+        };
+        let truth = simulate(&reference, DEFAULT_BUDGET).expect("reference");
+        assert_eq!(
+            (truth.end_time, truth.impacts_total),
+            (Some(0.0), Some(1)),
+            "the scene must end at the first contact: {zeta} {v0}"
+        );
+        let scene = Scene::new(
+            Contact {
+                frequency: Frequency::Omega(1000.0),
+                offset: Offset::Delta(1e-3),
+                restitution: Restitution::Coefficient(0.5),
+                closing_speed: v0,
+                threshold: Threshold::None,
+            },
+            Viscous::new(zeta).expect("valid"),
+        )
+        .expect("valid");
+        for method in host_tests::grid::methods() {
+            let p = scene.predict(method);
+            assert_eq!(p.bounce_time(), Some(0.0), "{method:?}: {p:?}");
+            assert_eq!(p.impacts_total.value(), Some(1.0), "{method:?}");
+            assert_eq!(p.expected_error, Some(0.0), "{method:?}");
+        }
+    }
+}
+
 fn two_body_problems(scenes: &[TwoBodyScene]) -> (Vec<String>, usize) {
     let mut problems = Vec::new();
     let mut stated = 0;
