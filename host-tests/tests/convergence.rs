@@ -63,8 +63,11 @@ fn averaged_tends_to_t_b1v_as_j0_vanishes() {
 fn averaged_tends_to_t_b2_and_t_b2r_as_j0_vanishes() {
     // In a gap E1 -> -(r Omega J/(2 pi) + 4 zeta Omega^3 Delta^2/J) with O(j) corrections:
     // t_b2r (t_b2 at R = 1) is its exact integral, so the averaged end departs by O(j0).
+    // The damping is light enough for the first flight to come back (its top clears the stop
+    // by about Delta j^2 / 2, damping takes about pi zeta Delta): with more, the bounce ends
+    // at the first contact, which every tier now reports exactly instead of the model's end.
     let delta = 1e-3;
-    for (r, zeta) in [(0.0, 0.01), (0.05, 0.01), (0.5, 0.1)] {
+    for (r, zeta) in [(0.0, 1e-8), (0.05, 1e-8), (0.5, 1e-8)] {
         for j0 in [1e-2, 1e-3] {
             let scene = Scene::new(
                 contact(delta, r, v0_for(j0, delta, r), Threshold::None),
