@@ -19,6 +19,23 @@ pub struct GridScene {
 }
 
 impl GridScene {
+    /// A scene outside the grid, from the reference's input (for a test of its own).
+    #[must_use]
+    pub fn of(name: &str, family: &'static str, reference: OneBody) -> Self {
+        let scale = reference.omega
+            * if reference.delta == 0.0 {
+                1e-5
+            } else {
+                reference.delta.abs()
+            };
+        Self {
+            name: name.to_owned(),
+            family,
+            j0: 2.0 * reference.restitution * reference.closing_speed / scale,
+            reference,
+        }
+    }
+
     /// The core's scene in f64.
     ///
     /// # Errors

@@ -5,7 +5,7 @@
 //! wrong (see src/accuracy and docs/error-table.md); none is widened here.
 
 use contact_bounce::{Method, Nodes};
-use host_tests::grid::{compare, grid, off_grid, two_body_grid, Row, TwoBodyScene};
+use host_tests::grid::{compare, grid, off_grid, two_body_grid, GridScene, Row, TwoBodyScene};
 use host_tests::reference::two_body::simulate as simulate_two;
 
 fn check(rows: &[Row]) -> Vec<String> {
@@ -189,7 +189,6 @@ fn a_gap_that_ends_at_the_first_contact_is_exact_in_every_tier() {
     // zeta = 0.5, R = 0.5 in a gap: the first flight falls short of the stop, so the bounce is
     // one impact at t = 0. The closed forms (t_b2r) and the averaged model used to report a
     // later end (1.125 and 1.08 in the units of the issue), and no expected error.
-    use contact_bounce::{Contact, Frequency, Offset, Restitution, Scene, Threshold, Viscous};
     use host_tests::reference::{simulate, OneBody, DEFAULT_BUDGET};
     for (zeta, v0) in [(0.5, 0.2), (0.3, 0.05), (0.9, 1.0)] {
         let reference = OneBody {
@@ -206,17 +205,9 @@ fn a_gap_that_ends_at_the_first_contact_is_exact_in_every_tier() {
             (Some(0.0), Some(1)),
             "the scene must end at the first contact: {zeta} {v0}"
         );
-        let scene = Scene::new(
-            Contact {
-                frequency: Frequency::Omega(1000.0),
-                offset: Offset::Delta(1e-3),
-                restitution: Restitution::Coefficient(0.5),
-                closing_speed: v0,
-                threshold: Threshold::None,
-            },
-            Viscous::new(zeta).expect("valid"),
-        )
-        .expect("valid");
+        let scene = GridScene::of("first contact", "gap", reference)
+            .core()
+            .expect("valid");
         for method in host_tests::grid::methods() {
             let p = scene.predict(method);
             assert_eq!(p.bounce_time(), Some(0.0), "{method:?}: {p:?}");
@@ -232,7 +223,6 @@ fn a_preload_with_a_tiny_first_impulse_is_resolved_and_exact() {
     // geometric tail from the first flight (listing impact 0 alone, and off by up to 5e-9:
     // damping drifts the flight ratio). Now it resolves 5 impacts and sums the tail only once
     // that drift is negligible; the exact tier agrees with it to 1e-9 (measured: 1e-12).
-    use contact_bounce::{Contact, Frequency, Offset, Restitution, Scene, Threshold, Viscous};
     use host_tests::reference::{simulate, OneBody, DEFAULT_BUDGET};
     for v0 in [1e-6, 1e-8, 1e-10] {
         for zeta in [0.05, 0.5] {
@@ -246,17 +236,9 @@ fn a_preload_with_a_tiny_first_impulse_is_resolved_and_exact() {
             };
             let truth = simulate(&reference, DEFAULT_BUDGET).expect("reference");
             assert_eq!(truth.first_impacts.len(), 5, "{v0} {zeta}");
-            let scene = Scene::new(
-                Contact {
-                    frequency: Frequency::Omega(1000.0),
-                    offset: Offset::Delta(-1e-3),
-                    restitution: Restitution::Coefficient(0.7),
-                    closing_speed: v0,
-                    threshold: Threshold::None,
-                },
-                Viscous::new(zeta).expect("valid"),
-            )
-            .expect("valid");
+            let scene = GridScene::of("tiny impulse", "preload", reference)
+                .core()
+                .expect("valid");
             let p = scene.predict(Method::Exact {
                 max_impacts: contact_bounce::EXACT_MAX_IMPACTS,
             });
