@@ -44,8 +44,9 @@ pub enum MapEnd<F> {
     /// A preload's flight loses all its impulse to damping (first order): the contact closes
     /// after this flight time (s).
     Closes(F),
-    /// A preload's departure fell below [`Float::TAIL_CUTOFF`] Omega |Delta|: the rest is a
-    /// Zeno tail, from this generating impulse (m/s).
+    /// A preload's departure fell below [`Float::TAIL_CUTOFF`] Omega |Delta| (and below the
+    /// threshold, if any: the impacts above it are all iterated, so they are counted one by
+    /// one): the rest is a Zeno tail, from this generating impulse (m/s).
     ZenoTail(F),
     /// The cap on impacts was reached, with this generating impulse left (m/s).
     Capped(F),
@@ -131,7 +132,10 @@ impl<F: Float, D: Dissipation<F>> Iterator for MapImpacts<'_, F, D> {
         let preload = scene.delta() < F::ZERO;
         let stop = if scene.regime() == Regime::SingleImpact {
             Some(MapEnd::NoReturn)
-        } else if preload && j <= F::TAIL_CUTOFF * scene.omega() * scene.delta().abs() {
+        } else if preload
+            && j <= F::TAIL_CUTOFF * scene.omega() * scene.delta().abs()
+            && scene.threshold_generating().is_none_or(|end| j < end)
+        {
             Some(MapEnd::ZenoTail(j))
         } else if j < F::MIN_POSITIVE {
             // The impulse has shrunk below the float's normal range (many impacts of a small
