@@ -44,6 +44,9 @@ pub const EXACT_MAX_IMPACTS: u32 = 100_000;
 /// prediction, see [`Scene::exact_work`].
 pub const ROOT_STEPS: u32 = 128;
 
+/// Most Halley steps tried from a guess before the bracketed search takes over.
+const HALLEY_STEPS: u32 = 6;
+
 /// lambda t below which y(t) / t is summed as a series. Above it the closed form loses at most
 /// |Delta| / |y| ~ a few epsilon at the root (y rises at the return speed over a flight long
 /// enough for lambda t > 0.5).
@@ -261,15 +264,15 @@ impl<F: Float> Oscillator<F> {
     /// [`Float::TAIL_CUTOFF`] (about the cube root of epsilon) of t, the next iterate is exact
     /// to rounding, and so is the return speed carried to it by its Taylor series to second
     /// order: no further evaluation. `None` when a step leaves 10 % of the guess, the speed is
-    /// not rising or 6 steps do not settle; the bracketed search then decides. (A preload
-    /// always returns: x swings through rest, beyond the stop.)
+    /// not rising or [`HALLEY_STEPS`] steps do not settle; the bracketed search then decides.
+    /// (A preload always returns: x swings through rest, beyond the stop.)
     fn halley(&self, a: F, guess: F) -> Option<Landing<F>> {
         let (low, high) = (guess * c::<F>(0.9), guess * c::<F>(1.1));
         let damping = F::TWO * self.zeta * self.omega;
         let w2 = self.omega * self.omega;
         let settled = F::TAIL_CUTOFF * c::<F>(0.1);
         let mut t = guess;
-        for _ in 0..6 {
+        for _ in 0..HALLEY_STEPS {
             let (y, v) = self.eval(a, t);
             if v <= F::ZERO || v.is_nan() {
                 return None;
@@ -429,15 +432,17 @@ enum Stop<F> {
 
 impl<F: Float, D: Dissipation<F>> Scene<F, D> {
     /// The most evaluations of the motion [`Method::Exact`](crate::Method::Exact) spends on
-    /// this scene with `max_impacts` (each a few `exp`, `sin`, `cos` or a series of at most
-    /// 60 terms), before the averaged model finishes what is left: known before calling.
+    /// this scene with `max_impacts` (each an `exp` and the sine series, or a Taylor series of
+    /// at most 40 terms; per flight at most 6 Halley steps, then at most [`ROOT_STEPS`] in the
+    /// bracketed search), before the averaged model finishes what is left: known before
+    /// calling.
     /// `None` where the tier evaluates no flight (the closed tier's exact sums answer, or the
     /// averaged model where a kernel acts).
     #[must_use]
     pub fn exact_work(&self, max_impacts: u32) -> Option<u64> {
         let d = self.dissipation();
         let solved = d.dissipates() && !d.has_kernel() && self.delta() != F::ZERO;
-        solved.then(|| (u64::from(max_impacts) + 1) * u64::from(ROOT_STEPS))
+        solved.then(|| (u64::from(max_impacts) + 1) * u64::from(ROOT_STEPS + HALLEY_STEPS))
     }
 }
 

@@ -57,7 +57,10 @@ pub enum Method<F> {
     /// closed, then the map or the averaged model by their cost, then the exact tier, which
     /// promises the float's rounding on every one-body scene without a kernel. Where nothing
     /// does (a kernel; f32 over very many impacts; a return decided by rounding) the smallest
-    /// expected error wins: check [`Prediction::promises`].
+    /// expected error wins: check [`Prediction::promises`]. Its worst-case work is the exact
+    /// tier's at [`EXACT_MAX_IMPACTS`](crate::EXACT_MAX_IMPACTS)
+    /// ([`Scene::exact_work`]); firmware that cannot afford that names a tier, or
+    /// `Method::Exact` with a smaller cap.
     Auto(Tolerance<F>),
 }
 

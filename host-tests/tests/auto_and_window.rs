@@ -71,6 +71,21 @@ fn auto_answers_with_the_exact_tier_where_nothing_cheaper_promises() {
 }
 
 #[test]
+fn the_exact_tier_states_its_work_bound_before_it_runs() {
+    // Viscous damping with Delta != 0: flights are solved, at most (cap + 1) x (128 + 6)
+    // evaluations. Without damping the closed tier's sums answer: no flight is solved.
+    let dome = catalogue::TACTILE_DOME.scene::<f64>().unwrap();
+    assert_eq!(dome.exact_work(1000), Some(1001 * 134));
+    let undamped = Scene::new(catalogue::TACTILE_DOME.contact::<f64>(), Undamped).unwrap();
+    assert_eq!(undamped.exact_work(1000), None);
+    // With a cap of 3 flights the averaged model finishes, and says so.
+    let p = dome.predict(Method::Exact { max_impacts: 3 });
+    assert!(p
+        .approximations
+        .contains(contact_bounce::Approximations::MAP_CONTINUED_AVERAGED));
+}
+
+#[test]
 fn auto_says_when_it_cannot_promise() {
     // A relaxation kernel has no exact tier in the core: at 1e-6 nothing promises.
     let scene = Scene::new(
