@@ -27,13 +27,14 @@
 //! closed tier's, which this tier returns. The exact solution with a relaxation kernel is not in
 //! the core: there this tier answers with the averaged model (its [`Tier`] says so).
 
+use crate::accuracy::{self, c};
 use crate::averaged::Averaged;
 use crate::closed::{self, by_regime};
 use crate::mechanisms::Dissipation;
 use crate::prediction::{Approximations, Count, Prediction, Tier, Time};
 use crate::quadrature::{Compensated, Nodes};
 use crate::regime::Regime;
-use crate::{accuracy, Float, Scene};
+use crate::{Float, Scene};
 
 /// The exact tier's default cap on solved flights: past it the averaged model finishes the
 /// sum (flagged [`Approximations::MAP_CONTINUED_AVERAGED`]).
@@ -76,10 +77,6 @@ const ROUNDING_PER_FLIGHT: f64 = 8.0;
 /// A clearance (the top of a flight relative to the stop) within this many epsilons of |Delta|
 /// decides a return by rounding: the count may be off by one.
 const GRAZING_EPSILONS: f64 = 64.0;
-
-fn c<F: Float>(x: f64) -> F {
-    F::from_f64(x)
-}
 
 /// (sin x, cos x) for the phases of one flight (0 <= x <= ~3 pi, the bracket's end): reduced by
 /// whole turns and a half turn into [-pi, pi) and summed by [`Float::sin_within_pi`], so the

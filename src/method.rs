@@ -147,28 +147,34 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         let run_map = || map::predict(self, cap);
         let run_averaged = || Averaged::new(self, Nodes::N8).predict();
         let map_first = map_cost <= averaged_cost;
+        // (true, _) for the map, (false, _) for the averaged model.
         let cheaper = match (fits(map_error), fits(averaged_error), map_first) {
-            (true, true, true) | (true, false, _) => Some(run_map()),
-            (_, true, _) => Some(run_averaged()),
+            (true, true, true) | (true, false, _) => Some((true, run_map())),
+            (_, true, _) => Some((false, run_averaged())),
             _ => None,
         };
         // A tier chosen on estimates states its own error once it has run (the map's, say,
         // from the count it found): it is kept only if it still promises.
-        if let Some(p) = cheaper {
+        if let Some((_, p)) = cheaper {
             if p.promises(tolerance) {
                 return p;
             }
         }
         // The exact tier, whose error is the float's rounding (or the averaged rest past its
         // cap). If even it does not promise (a kernel, a return decided by rounding, f32 over
-        // many impacts), the smallest expected error wins.
+        // many impacts), the smallest expected error wins (a tier already run is not rerun).
         let exact = exact::predict(self, exact::EXACT_MAX_IMPACTS);
         if exact.promises(tolerance) {
             return exact;
         }
+        let (map, averaged) = match cheaper {
+            Some((true, p)) => (p, run_averaged()),
+            Some((false, p)) => (run_map(), p),
+            None => (run_map(), run_averaged()),
+        };
         let rank = |e: Option<F>| e.unwrap_or(F::MAX);
         let mut best = closed;
-        for other in [run_map(), run_averaged(), exact] {
+        for other in [map, averaged, exact] {
             if rank(other.expected_error) < rank(best.expected_error) {
                 best = other;
             }

@@ -13,7 +13,8 @@ use crate::prediction::Approximations;
 use crate::regime::Regime;
 use crate::{Float, Scene};
 
-fn c<F: Float>(x: f64) -> F {
+/// `x` in the float in use (constants of the figures and the models).
+pub(crate) fn c<F: Float>(x: f64) -> F {
     F::from_f64(x)
 }
 
