@@ -3,7 +3,10 @@
 //! Definitions every output uses (P_n = (1 + R) v_n is impact n's impulse per unit reduced
 //! mass, impact 0 at t = 0; P_end the threshold impulse):
 //! - `impacts_above`: impacts with P >= P_end, impact 0 included (`None`: infinitely many);
-//! - `last_above_time`: time of the last impact with P >= P_end (`None`: never ends);
+//!   with two bodies whose stuck pair reopens, counted over every burst (the impulses of a
+//!   burst after a separation may rise above P_end again, after a tail below it);
+//! - `last_above_time`: time of the last impact with P >= P_end, in any burst (`None`: never
+//!   ends);
 //! - `end_time`: the last impact when impacts stop (gap with damping, single impact), the
 //!   accumulation time of a Zeno preload; `None` when endless;
 //! - `impacts_total`: the total when finite, `None` when infinite (Zeno or endless).
