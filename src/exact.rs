@@ -103,7 +103,7 @@ enum Damping<F> {
 
 /// x'' + 2 zeta Omega x' + Omega^2 x = 0 between impacts at x = Delta.
 #[derive(Debug, Clone, Copy)]
-struct Oscillator<F> {
+pub(crate) struct Oscillator<F> {
     omega: F,
     zeta: F,
     delta: F,
@@ -114,7 +114,7 @@ struct Oscillator<F> {
 
 /// How a flight that leaves the stop ends.
 #[derive(Debug, Clone, Copy)]
-enum Landing<F> {
+pub(crate) enum Landing<F> {
     /// It returns after this time (s) at this speed (m/s); `grazing` when the return was
     /// decided by rounding (its top within [`GRAZING_EPSILONS`] of the stop).
     Returns { time: F, speed: F, grazing: bool },
@@ -123,7 +123,7 @@ enum Landing<F> {
 }
 
 impl<F: Float> Oscillator<F> {
-    fn new(omega: F, zeta: F, delta: F) -> Self {
+    pub(crate) fn new(omega: F, zeta: F, delta: F) -> Self {
         let (damping, lambda) = if zeta < F::ONE {
             let w = omega * ((F::ONE - zeta) * (F::ONE + zeta)).sqrt();
             (
@@ -301,7 +301,7 @@ impl<F: Float> Oscillator<F> {
     }
 
     /// The flight leaving the stop at speed `a` > 0.
-    fn land(&self, a: F) -> Landing<F> {
+    pub(crate) fn land(&self, a: F) -> Landing<F> {
         let Some(low) = self.first_minimum(a) else {
             return Landing::Stays { grazing: false };
         };

@@ -5,6 +5,10 @@
 //! (Delta J = E1_damping(J) T(J)); no root finding. Exact for zeta = 0; preload within 0.3 %
 //! for zeta <= 0.01 and 2.5 % for zeta <= 0.1; gap end within ~2 % for zeta <= 1e-3, -12 % at
 //! zeta = 0.01, unreliable for a gap with zeta >= 0.1 (it cannot decide the last return).
+//! Where the first-order loss over a flight exceeds the flight's impulse (heavy viscous
+//! damping, large impulses), first order cannot say whether the body returns: the prediction
+//! solves that flight exactly (as [`Method::Exact`](crate::Method::Exact) does) and goes on
+//! from its return; a scene type without viscous damping links none of this.
 //!
 //! Iterations are bounded: a preload's Zeno tail is summed on the small-impulse asymptote once
 //! J < [`Float::TAIL_CUTOFF`] Omega |Delta|; past `max_impacts` the averaged model finishes
@@ -13,6 +17,7 @@
 
 use crate::averaged::Averaged;
 use crate::closed::{asymptotic_count, asymptotic_time, by_regime};
+use crate::exact::{Landing, Oscillator};
 use crate::mechanisms::Dissipation;
 use crate::prediction::{Approximations, Count, Prediction, Tier, Time};
 use crate::quadrature::{Compensated, Nodes};
@@ -55,6 +60,10 @@ pub enum MapEnd<F> {
 /// The map's impacts, one by one, allocation-free: impact 0, then each return until the map
 /// stops ([`MapImpacts::end`] says why). Also a bounce trace generator for firmware tests.
 ///
+/// The walk is first order only: where a flight's first-order loss exceeds its impulse it
+/// ends (`NoReturn` in a gap, `Closes` in a preload), where the map's prediction solves that
+/// flight exactly and goes on.
+///
 /// ```
 /// use contact_bounce::{catalogue, MapImpacts};
 /// let dome = catalogue::TACTILE_DOME.scene::<f32>()?;
@@ -72,6 +81,8 @@ pub struct MapImpacts<'a, F, D> {
     started: bool,
     max_impacts: u32,
     end: Option<MapEnd<F>>,
+    /// The departure speed (m/s) whose first-order loss exceeded its flight's impulse.
+    stalled: Option<F>,
 }
 
 impl<'a, F: Float, D: Dissipation<F>> MapImpacts<'a, F, D> {
@@ -86,6 +97,24 @@ impl<'a, F: Float, D: Dissipation<F>> MapImpacts<'a, F, D> {
             started: false,
             max_impacts,
             end: None,
+            stalled: None,
+        }
+    }
+
+    /// The walk from an impact other than impact 0: `index` at `time` (s), arriving at
+    /// `speed` (m/s); the next item is the impact after it.
+    fn resume(scene: &'a Scene<F, D>, index: u32, time: F, speed: F, max_impacts: u32) -> Self {
+        let mut sum = Compensated::new();
+        sum.add(time);
+        Self {
+            scene,
+            speed,
+            time: sum,
+            index,
+            started: true,
+            max_impacts,
+            end: None,
+            stalled: None,
         }
     }
 
@@ -157,6 +186,8 @@ impl<F: Float, D: Dissipation<F>> Iterator for MapImpacts<'_, F, D> {
         if returning <= F::ZERO {
             // The first-order loss exceeds the flight's impulse (heavy damping): in a gap the
             // last impact was the last; a preload always returns, with a vanishing impulse.
+            // (First order cannot decide either: the map's prediction solves this flight.)
+            self.stalled = Some(departure);
             self.end = Some(if preload {
                 MapEnd::Closes(period)
             } else {
@@ -185,6 +216,35 @@ enum Stop<F> {
     Rest { j: F, t: F, n: F, averaged: bool },
 }
 
+/// The impacts counted so far, and those above the threshold.
+struct Tally<F> {
+    threshold: Option<F>,
+    last_above: F,
+    above: F,
+    still_above: bool,
+    below_in_endless: bool,
+    latest: Impact<F>,
+}
+
+impl<F: Float> Tally<F> {
+    /// Counts `impact`; true when counting stops (below the threshold in an endless regime).
+    fn record(&mut self, impact: Impact<F>, endless: bool) -> bool {
+        self.latest = impact;
+        if !self.still_above {
+            return false;
+        }
+        if self.threshold.is_some_and(|p_end| impact.impulse < p_end) {
+            self.still_above = false;
+            self.below_in_endless = endless;
+            endless
+        } else {
+            self.last_above = impact.time;
+            self.above = F::from_u32(impact.index) + F::ONE;
+            false
+        }
+    }
+}
+
 /// The map's prediction, iterating at most `max_impacts` impacts.
 #[allow(clippy::too_many_lines)] // one loop and its hand-over; splitting it would hide the state
 pub(crate) fn predict<F: Float, D: Dissipation<F>>(
@@ -197,47 +257,89 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
     let orbit = scene.orbit();
     let threshold = scene.threshold_impulse();
     let endless = scene.regime() == Regime::Endless;
-    let mut last_above = F::ZERO;
-    let mut above = F::ONE;
-    let mut still_above = true;
-    let mut latest = Impact {
-        index: 0,
-        time: F::ZERO,
-        impulse: scene.first_impulse(),
+    let mut tally = Tally {
+        threshold,
+        last_above: F::ZERO,
+        above: F::ONE,
+        still_above: true,
+        below_in_endless: false,
+        latest: Impact {
+            index: 0,
+            time: F::ZERO,
+            impulse: scene.first_impulse(),
+        },
     };
     let mut impacts = MapImpacts::new(scene, max_impacts);
-    let mut below_in_endless = false;
-    for impact in impacts.by_ref().skip(1) {
-        latest = impact;
-        if !still_above {
-            continue;
-        }
-        if threshold.is_some_and(|p_end| impact.impulse < p_end) {
-            still_above = false;
-            if endless {
-                below_in_endless = true;
+    let _ = impacts.next(); // impact 0: `tally.latest`
+                            // Where the first-order loss over a flight exceeds its impulse (heavy viscous damping),
+                            // first order cannot say whether, or when, the body returns: that flight is solved
+                            // exactly, and the map goes on from its return. (Not with a kernel: the exact flight
+                            // knows no memory. A scene type without damping links none of this.)
+    let dissipation = scene.dissipation();
+    let solvable = dissipation.dissipates() && !dissipation.has_kernel();
+    let mut capped_stall = None;
+    loop {
+        for impact in impacts.by_ref() {
+            if tally.record(impact, endless) {
                 break;
             }
-        } else {
-            last_above = impact.time;
-            above = F::from_u32(impact.index) + F::ONE;
         }
+        let Some(departure) = impacts
+            .stalled
+            .filter(|_| solvable && !tally.below_in_endless)
+        else {
+            break;
+        };
+        if tally.latest.index >= max_impacts {
+            capped_stall = Some(F::TWO * departure);
+            break;
+        }
+        let flight = Oscillator::new(scene.omega(), dissipation.damping_ratio(), scene.delta());
+        let Landing::Returns { time, speed, .. } = flight.land(departure) else {
+            break; // the last impact was the last (`impacts.end()` says so)
+        };
+        let impact = Impact {
+            index: tally.latest.index.saturating_add(1),
+            time: tally.latest.time + time,
+            impulse: (F::ONE + scene.restitution()) * speed,
+        };
+        if tally.record(impact, endless) {
+            break;
+        }
+        impacts = MapImpacts::resume(scene, impact.index, impact.time, speed, max_impacts);
     }
+    let Tally {
+        mut last_above,
+        mut above,
+        still_above,
+        below_in_endless,
+        latest,
+        ..
+    } = tally;
     let count = F::from_u32(latest.index) + F::ONE;
-    let stop = match impacts.end() {
+    let solved_stall = solvable && impacts.stalled.is_some();
+    let stop = match (capped_stall, impacts.end()) {
         // An endless regime never ends: where the first-order loss says it does, the next
         // impact is below any threshold.
         _ if below_in_endless => Stop::BelowThreshold,
-        Some(MapEnd::NoReturn | MapEnd::Closes(_)) if endless => Stop::BelowThreshold,
-        Some(MapEnd::NoReturn) | None => Stop::Ended(latest.time, count),
-        Some(MapEnd::Closes(flight)) => Stop::Ended(latest.time + flight, count),
-        Some(MapEnd::ZenoTail(j)) => Stop::Rest {
+        (Some(j), _) => Stop::Rest {
+            j,
+            t: latest.time,
+            n: count,
+            averaged: true,
+        },
+        (_, Some(MapEnd::NoReturn | MapEnd::Closes(_))) if endless => Stop::BelowThreshold,
+        // The exact flight did not return: the bounce ended at the last impact.
+        _ if solved_stall => Stop::Ended(latest.time, count),
+        (_, Some(MapEnd::NoReturn) | None) => Stop::Ended(latest.time, count),
+        (_, Some(MapEnd::Closes(flight))) => Stop::Ended(latest.time + flight, count),
+        (_, Some(MapEnd::ZenoTail(j))) => Stop::Rest {
             j,
             t: latest.time,
             n: count,
             averaged: false,
         },
-        Some(MapEnd::Capped(j)) => Stop::Rest {
+        (_, Some(MapEnd::Capped(j))) => Stop::Rest {
             j,
             t: latest.time,
             n: count,
