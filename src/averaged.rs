@@ -11,7 +11,7 @@ use crate::closed::{asymptotic_count, asymptotic_time, by_regime};
 use crate::error::{non_negative, Error, Parameter, Reason};
 use crate::mechanisms::Dissipation;
 use crate::prediction::{Approximations, Count, Prediction, Tier, Time};
-use crate::quadrature::{integrate, panel, Nodes, MAX_PANELS, PANEL_WIDTH};
+use crate::quadrature::{integrate_exp, panel, Nodes, MAX_PANELS, PANEL_WIDTH};
 use crate::regime::Regime;
 use crate::{accuracy, Float, Scene};
 
@@ -153,7 +153,11 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
 
     /// The integrands in s = ln J: (J / |E1|, J / (|E1| T)).
     fn integrand(&self, s: F) -> (F, F) {
-        let impulse = s.exp();
+        self.integrand_at(s.exp())
+    }
+
+    /// The integrands in s = ln J at J = e^s.
+    fn integrand_at(&self, impulse: F) -> (F, F) {
         let point = self.scene.orbit().at(impulse);
         let w = impulse / -self.scene.rate_at(&point);
         (w, w / point.period())
@@ -172,8 +176,9 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
         let quad_low = low.max(cut);
         let (mut time, mut impacts, mut capped) = (F::ZERO, F::ZERO, false);
         if quad_low > F::ZERO && high > quad_low {
-            let ((t, n), cap) =
-                integrate(quad_low.ln(), high.ln(), self.nodes, |s| self.integrand(s));
+            let ((t, n), cap) = integrate_exp(quad_low.ln(), high.ln(), self.nodes, |j| {
+                self.integrand_at(j)
+            });
             if t.is_nan() || t < F::ZERO || !t.is_finite() {
                 // The decay rate vanished in this float on the way down (it underflows, or
                 // rounds to the wrong sign, at small J): J does not reach `low` in any time

@@ -33,7 +33,8 @@ pub struct Orbit<F> {
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct OrbitPoint<F> {
     impulse: F,
-    hypot: F,
+    /// 2 Omega Delta (m/s).
+    offset: F,
     phase: F,
     supplement: F,
     omega: F,
@@ -71,7 +72,6 @@ impl<F: Float> Orbit<F> {
     #[must_use]
     pub fn at(&self, impulse: F) -> OrbitPoint<F> {
         let q = self.offset_impulse();
-        let hypot = impulse.hypot(q);
         let (phase, supplement) = if q > F::ZERO {
             // Gap: theta in (pi/2, pi); its supplement is small for small J, so compute it first.
             let d = impulse.atan2(q);
@@ -83,7 +83,7 @@ impl<F: Float> Orbit<F> {
         };
         OrbitPoint {
             impulse,
-            hypot,
+            offset: q,
             phase,
             supplement,
             omega: self.omega,
@@ -97,7 +97,7 @@ impl<F: Float> Orbit<F> {
     pub fn position(&self, impulse: F, t: F) -> F {
         let p = self.at(impulse);
         let local = p.time_in_period(t);
-        -(p.hypot / (F::TWO * self.omega)) * (self.omega * local - p.phase).cos_within_pi()
+        -(p.hypot() / (F::TWO * self.omega)) * (self.omega * local - p.phase).cos_within_pi()
     }
 
     /// The generating orbit's velocity x'(t) (m/s), for any t >= 0 (T-periodic).
@@ -105,7 +105,7 @@ impl<F: Float> Orbit<F> {
     pub fn velocity(&self, impulse: F, t: F) -> F {
         let p = self.at(impulse);
         let local = p.time_in_period(t);
-        p.hypot * F::HALF * (self.omega * local - p.phase).sin_within_pi()
+        p.hypot() * F::HALF * (self.omega * local - p.phase).sin_within_pi()
     }
 
     /// chi(t) = cos(Omega (t - T/2)) / (2 Omega sin(Omega T / 2)) (the paper's Eq. 3 with its
@@ -115,7 +115,7 @@ impl<F: Float> Orbit<F> {
         let p = self.at(impulse);
         let local = p.time_in_period(t);
         // 1 / (2 Omega sin theta) = h / (2 Omega J)
-        (self.omega * local - p.phase).cos_within_pi() * p.hypot / (F::TWO * self.omega * impulse)
+        (self.omega * local - p.phase).cos_within_pi() * p.hypot() / (F::TWO * self.omega * impulse)
     }
 }
 
@@ -127,8 +127,17 @@ impl<F: Float> OrbitPoint<F> {
     }
     /// h = hypot(J, 2 Omega Delta) (m/s).
     #[must_use]
-    pub const fn hypot(&self) -> F {
-        self.hypot
+    pub fn hypot(&self) -> F {
+        self.impulse.hypot(self.offset)
+    }
+    /// sin(2 theta) = -2 J (2 Omega Delta) / h^2, algebraically (no sine, no hypot): as
+    /// -2 t / (1 + t^2) with t the smaller of the ratios of J and 2 Omega Delta, so it is
+    /// within a few ULP for every J and never overflows.
+    #[must_use]
+    pub fn sin_twice_phase(&self) -> F {
+        let (j, q) = (self.impulse, self.offset);
+        let t = if j.abs() >= q.abs() { q / j } else { j / q };
+        -(t + t) / (F::ONE + t * t)
     }
     /// theta(J) = atan2(J, -2 Omega Delta), in (0, pi): preload (0, pi/2), grazing pi/2, gap
     /// (pi/2, pi).
@@ -144,7 +153,12 @@ impl<F: Float> OrbitPoint<F> {
     /// sin(theta) = J / h.
     #[must_use]
     pub fn sin_phase(&self) -> F {
-        self.impulse / self.hypot
+        self.impulse / self.hypot()
+    }
+    /// 2 Omega Delta (m/s), the offset's impulse scale (signed: gap > 0).
+    #[must_use]
+    pub const fn offset_impulse(&self) -> F {
+        self.offset
     }
     /// The period between impacts T(J) = 2 theta / Omega (s): the exact flight time of an
     /// undamped flight that leaves the stop at J/2.

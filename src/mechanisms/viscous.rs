@@ -8,9 +8,10 @@ use crate::Float;
 /// Viscous damping of ratio zeta (x'' + 2 zeta Omega x' + Omega^2 x = 0 in flight).
 ///
 /// E1 term: -zeta Omega (J^2 + 4 Omega^2 Delta^2) / J * (1 - sin(2 theta) / (2 theta)),
-/// evaluated as -zeta Omega (2 h theta)(2 h theta / J) (1 - sinc(2 theta)) / (2 theta)^2 with
-/// the series of physics.md sec. 3 below [`Float::SINC_SERIES_LIMIT`] and
-/// sin(2 theta) = -sin(2 (pi - theta)) for a gap, so it is accurate to a few ULP for every
+/// evaluated as -zeta Omega ((2 theta)^2 J + (2 theta q)(2 theta q / J)) (1 - sinc(2 theta)) /
+/// (2 theta)^2, q = 2 Omega Delta, with the series of physics.md sec. 3 below
+/// [`Float::SINC_SERIES_LIMIT`] and sin(2 theta) = -2 J q / (J^2 + q^2) algebraically (one
+/// atan per evaluation, for theta; no sine, no hypot), so it is accurate to a few ULP for every
 /// J > 0 and does not underflow before J does.
 ///
 /// ```
@@ -75,20 +76,16 @@ impl<F: Float> Dissipation<F> for Viscous<F> {
             // Exactly no loss (and no 0 * inf where h^2/J overflows in a gap as J -> 0).
             return F::ZERO;
         }
-        let theta = point.phase();
-        let supplement = point.supplement();
-        let two_theta = F::TWO * theta;
-        // sin(2 theta) from the smaller of theta and pi - theta: the argument is in (0, pi].
-        let sin_two_theta = if theta <= supplement {
-            two_theta.sin_within_pi()
-        } else {
-            -(F::TWO * supplement).sin_within_pi()
-        };
-        let loss = one_minus_sinc_over_square(two_theta, sin_two_theta);
-        // (h^2 / J) (1 - sinc(2 theta)) = (2 h theta) (2 h theta / J) loss: 2 h theta ~ 2 J for
-        // a small phase, so nothing underflows before J itself does.
-        let scaled = point.hypot() * two_theta;
-        -self.zeta * point.natural_frequency() * scaled * (scaled / point.impulse()) * loss
+        let two_theta = F::TWO * point.phase();
+        // sin(2 theta) algebraically from J and 2 Omega Delta (no sine).
+        let loss = one_minus_sinc_over_square(two_theta, point.sin_twice_phase());
+        // (h^2 / J) (2 theta)^2 = 2 theta (2 theta J) + (2 theta q)(2 theta q / J), q = 2 Omega
+        // Delta, with no hypot: for a small phase (preload, small J) 2 theta q / J stays near
+        // 2 and 2 theta q near 2 J, so nothing overflows or underflows before J itself does.
+        let (j, q) = (point.impulse(), point.offset_impulse());
+        let scaled = two_theta * q;
+        let h2_over_j = two_theta * (two_theta * j) + scaled * (scaled / j);
+        -self.zeta * point.natural_frequency() * h2_over_j * loss
     }
     fn asymptote(&self, orbit: &Orbit<F>) -> Asymptote<F> {
         let omega = orbit.omega();
