@@ -137,6 +137,13 @@ pub fn read(path: &str) -> Result<Vec<Entry>, Vec<FileError>> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| fail(String::new(), format!("cannot read it: {e}")))?;
     let scenes: Vec<Value> = if path.ends_with(".toml") {
+        // TOML reads 1e-400 as 0 without a word: a nonzero gap would become no gap.
+        if let Some((line, literal)) = crate::strict::toml_underflow(&text) {
+            return Err(fail(
+                format!("line {line}"),
+                format!("{literal} is not zero but reads as 0: out of range"),
+            ));
+        }
         let doc: toml::Table = toml::from_str(&text).map_err(|e| {
             let line = e.span().map_or(0, |s| {
                 text[..s.start.min(text.len())].lines().count().max(1)

@@ -1,8 +1,8 @@
 //! Strict reading of scene files: what `serde_json` and `toml` accept but a scene must not.
 //!
 //! - A key given twice in one JSON object (JSON keeps the last one silently): refused.
-//! - A number literal that underflows to 0 or that has no finite value (`1e-400` parses as 0):
-//!   refused, so a nonzero gap never becomes no gap.
+//! - A number literal (JSON or TOML) that underflows to 0 or that has no finite value (`1e-400`
+//!   parses as 0): refused, so a nonzero gap never becomes no gap.
 //! - TOML's `nan` and `inf`: refused by the path of the field that holds them.
 
 use std::fmt;
@@ -135,6 +135,33 @@ pub fn json(text: &str) -> Result<Value, (usize, String)> {
     Ok(v)
 }
 
+/// The first float literal of a TOML document that is not zero but reads as zero (`1e-400`),
+/// with its line (from 1). `None` also where the text is not TOML (its parser says why).
+#[must_use]
+pub fn toml_underflow(text: &str) -> Option<(usize, String)> {
+    use toml::de::{DeTable, DeValue};
+    use toml::Spanned;
+    fn walk<'i>(v: &Spanned<DeValue<'i>>, text: &str) -> Option<(usize, String)> {
+        match v.get_ref() {
+            DeValue::Float(f) => {
+                let literal = f.as_str();
+                let mantissa = literal.split(['e', 'E']).next().unwrap_or("");
+                let nonzero = mantissa.bytes().any(|b| (b'1'..=b'9').contains(&b));
+                (nonzero && literal.parse::<f64>().is_ok_and(|x| x == 0.0)).then(|| {
+                    let start = v.span().start.min(text.len());
+                    let line = text.get(..start).map_or(1, |t| t.lines().count().max(1));
+                    (line, literal.to_owned())
+                })
+            }
+            DeValue::Array(items) => items.iter().find_map(|i| walk(i, text)),
+            DeValue::Table(t) => t.iter().find_map(|(_, i)| walk(i, text)),
+            _ => None,
+        }
+    }
+    let doc = DeTable::parse(text).ok()?;
+    doc.get_ref().iter().find_map(|(_, v)| walk(v, text))
+}
+
 /// The dotted path of the first NaN or infinite float in `v`, if any.
 #[must_use]
 pub fn toml_non_finite(v: &toml::Value) -> Option<String> {
@@ -197,5 +224,15 @@ mod tests {
             toml_non_finite(&toml::Value::Table(t)),
             Some("a.1".to_owned())
         );
+    }
+
+    #[test]
+    fn toml_underflows_are_found_where_they_are_and_zeros_are_not() {
+        assert_eq!(toml_underflow("a = 1.0\nb = 0.0e-400\nc = 0e5\n"), None);
+        assert_eq!(
+            toml_underflow("a = 1.0\n\n[t]\nb = [1.0, { c = 1_0.5e-400 }]\n"),
+            Some((4, "10.5e-400".to_owned()))
+        );
+        assert_eq!(toml_underflow("not toml = = 1e-400"), None);
     }
 }

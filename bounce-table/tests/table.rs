@@ -390,6 +390,16 @@ fn strict_parsing_refuses_nan_inf_duplicates_and_underflows_by_name() {
             "the key \"restitution\" is given twice",
         ),
         (
+            "under.toml",
+            format!("[[switch]]\nname = \"a\"\n{dome}damping_ratio = 1e-400\n"),
+            "line 8: 1e-400 is not zero but reads as 0",
+        ),
+        (
+            "under-inline.toml",
+            format!("[[switch]]\nname = \"a\"\n{dome}damping_ratio = {{ min = 0.01, max = -2.5e-999 }}\n"),
+            "line 8: -2.5e-999 is not zero but reads as 0",
+        ),
+        (
             "under.jsonl",
             r#"{"name":"a","mass":5e-5,"stiffness":5000,"preload_force":1.0,"restitution":0.7,"closing_speed":0.5,"damping_ratio":1e-400}"#.to_owned(),
             "line 1: 1e-400 is not zero but reads as 0",
