@@ -1,7 +1,8 @@
 // The lines `examples/uno.rs` prints (on the Uno and on the host): for two switches, the map's
 // impacts walked one by one with `MapImpacts` and its Zeno tail (the map tier's end time, with
 // none of the averaged model linked), and a compile-time window. The full `predict` report
-// (three tiers) needs ~48 KB of AVR flash, more than the Uno's 32 KB.
+// (three tiers) needs more AVR flash than the Uno's 32 KB (`uno_cost_closed_map` in
+// docs/cost-report.md).
 
 use contact_bounce::{catalogue, window_ticks, Float, MapImpacts, DEFAULT_MAX_IMPACTS};
 use core::fmt::Write;
