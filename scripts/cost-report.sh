@@ -162,6 +162,76 @@ if [ "$uno" = 1 ]; then
   fi
 fi
 
+# One firmware per tier (examples/tier_*.rs, skeleton examples/common/tier_firmware.rs): the
+# method is a constant, so each links its tier alone. Crate bytes: its text minus tier_empty's
+# (the same skeleton, no crate code). The count is the tier's call (and its window) between
+# the second and third marks: instructions under QEMU, cycles under simavr.
+tiers=(tb1v_window restitution_averaged closed averaged map auto exact)
+marks_qemu() { # elf target -> one count per interval between marks
+  local mark
+  mark=$("$llvm_bin/llvm-nm" "$1" | awk '$3 == "cost_mark" { print $1 }')
+  # shellcheck disable=SC2086
+  timeout 600 qemu-system-arm ${qemu[$2]} -nographic -semihosting-config enable=on,target=native \
+    -d exec,nochain -singlestep -D "$tmp/trace" -kernel "$1"
+  awk -v mark="$mark" '{ if (match($0, /\[[0-9a-f]+\/([0-9a-f]+)\//)) { n++; if (substr($0, RSTART+10, 8) == mark) { if (last) print n - last; last = n } } }' "$tmp/trace"
+}
+{
+  echo
+  echo "## One firmware per tier"
+  echo
+  echo "\`examples/tier_*.rs\`: the tactile dome in f32, one tier named as a constant (so it alone is"
+  echo "linked), its window at 10 us samples stored to a volatile. Crate bytes: the firmware's text minus"
+  echo "\`tier_empty\`'s, the same skeleton with no crate code (thumbv6m: EMPTY6, thumbv7em: EMPTY7, Uno: EMPTYU"
+  echo "bytes). The count is the call of the tier and its window (scene validation apart): instructions"
+  echo "on Cortex-M (QEMU), cycles on the Uno (simavr). tb1v-window is the closed form t_b1v and its"
+  echo "window alone; restitution-averaged the averaged tier (N8) on the dome without damping, a scene"
+  echo "type that links no damping (its scene is built inside the count). Auto at 1 %. The Uno's"
+  echo "float arithmetic is avr-libc's (\`.cargo/config.toml\`); a firmware that does not fit its 32 KB"
+  echo "shows what it needs."
+  echo
+  echo "| target | firmware | crate bytes | whole text | data | bss | cycles or instructions |"
+  echo "|---|---|---:|---:|---:|---:|---:|"
+} >> "$out"
+for features in "" micromath; do
+  for target in thumbv6m-none-eabi thumbv7em-none-eabihf; do
+    # shellcheck disable=SC2046
+    cargo build --quiet --release --target "$target" ${features:+--features "$features"} \
+      $(printf -- '--example tier_%s ' empty "${tiers[@]}")
+    read -r empty _ < <("$llvm_bin/llvm-size" "target/$target/release/examples/tier_empty" | tail -n 1)
+    [ "$target" = thumbv6m-none-eabi ] && sed -i "s/EMPTY6/$empty/" "$out"
+    [ "$target" = thumbv7em-none-eabihf ] && sed -i "s/EMPTY7/$empty/" "$out"
+    for tier in "${tiers[@]}"; do
+      elf="target/$target/release/examples/tier_$tier"
+      read -r text data bss _ < <("$llvm_bin/llvm-size" "$elf" | tail -n 1)
+      mapfile -t c < <(marks_qemu "$elf" "$target")
+      name=${tier//_/-}${features:+ ($features)}
+      echo "| $target | $name | $((text - empty)) | $text | $data | $bss | ${c[1]} |" >> "$out"
+    done
+  done
+done
+if [ "$uno" = 1 ]; then
+  gcc -O2 -o "$tmp/simavr-cycles" tools/simavr-cycles.c -lsimavr
+  cargo +nightly build --quiet --release --example tier_empty --target avr-none -Zbuild-std=core
+  read -r empty _ < <(avr-size target/avr-none/release/examples/tier_empty.elf | tail -n 1)
+  sed -i "s/EMPTYU/$empty/" "$out"
+  for tier in "${tiers[@]}"; do
+    over=$(cargo +nightly build --release --example "tier_$tier" --target avr-none -Zbuild-std=core 2>&1 \
+      | sed -n "s/.*region \`text' overflowed by \([0-9]*\) bytes.*/\1/p" | head -n 1 || true)
+    name=${tier//_/-}
+    if [ -n "$over" ]; then
+      echo "| avr-atmega328p | $name | $((32768 + over - empty)) | $((32768 + over)) (does not fit) | - | - | - |" >> "$out"
+    else
+      elf="target/avr-none/release/examples/tier_$tier.elf"
+      read -r text data bss _ < <(avr-size "$elf" | tail -n 1)
+      mark=$(avr-nm "$elf" | awk '$3 == "cost_mark" { print $1 }')
+      mapfile -t c < <("$tmp/simavr-cycles" "$elf" "$mark" | grep -E '^[0-9]+$' | awk 'NR > 1 { print $1 - prev } { prev = $1 }')
+      echo "| avr-atmega328p | $name | $((text - empty)) | $text | $data | $bss | ${c[1]} |" >> "$out"
+    fi
+  done
+else
+  sed -i "s/EMPTYU/(no nightly here)/" "$out"
+fi
+
 cat "$out"
 if [ "${1:-}" = "--write" ]; then
   cp "$out" docs/cost-report.md

@@ -116,10 +116,10 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
             return closed;
         }
         // Expected errors and rough costs of the other tiers, known before running them. Costs
-        // count E1 evaluations for the averaged tier and impacts for the map, one unit each: on
-        // a Cortex-M4F (f32), on the tactile dome, both cost about 470-490 instructions (averaged
-        // N8: 34020 over 9 panels x 8 nodes; map: 5832 over ~12 impacts walked before the Zeno
-        // tail; `docs/cost-report.md`, `scripts/cost-report.sh`).
+        // are in map impacts: on a Cortex-M4F (f32), on the tactile dome, an impact of the map
+        // costs about 300 instructions (3594 over ~12 impacts walked before the Zeno tail) and
+        // an E1 evaluation of the averaged tier about 185 (N8: 13323 over 9 panels x 8 nodes),
+        // so 0.6 of an impact (`docs/cost-report.md`, `scripts/cost-report.sh`).
         let estimate = closed.impacts_total.value();
         let averaged_error = accuracy::with_reduction(self, accuracy::averaged(self, estimate));
         let map_error = accuracy::with_reduction(self, accuracy::map(self, estimate));
@@ -129,7 +129,8 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
             .unwrap_or(start * F::TAIL_CUTOFF)
             .max(F::TAIL_CUTOFF * self.omega() * self.delta().abs());
         let (panels, _) = panel_count((start.ln() - floor.ln()).max(F::ZERO));
-        let averaged_cost = F::from_u32(panels.saturating_mul(Nodes::N8.count()));
+        let averaged_cost =
+            F::from_u32(panels.saturating_mul(Nodes::N8.count())) * F::from_f64(0.6);
         let map_cost = match (
             self.regime(),
             closed.impacts_above.value(),

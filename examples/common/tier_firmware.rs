@@ -1,0 +1,76 @@
+// The skeleton of the per-tier cost firmware (`examples/tier_*.rs`): the tactile dome of
+// physics.md sec. 7 in f32, its inputs hidden from the optimiser; `cost_mark(0)`, the scene
+// validated, `cost_mark(1)`, the example's `work` (one tier, named as a constant, so only that
+// tier is linked), `cost_mark(2)`, its result stored to a volatile. `scripts/cost-report.sh`
+// counts instructions (QEMU) or cycles (simavr) between the marks, and takes the crate's share
+// of flash as this firmware's text minus `tier_empty`'s (the same skeleton, no crate code).
+
+use contact_bounce::{catalogue, Margin, Prediction, Scene, Viscous, Window};
+use core::hint::black_box;
+
+/// The marker: the instructions (cycles) between two calls are one measurement.
+#[inline(never)]
+#[no_mangle]
+pub extern "C" fn cost_mark(id: u8) {
+    black_box(id);
+}
+
+/// The window of a prediction at 10 us samples, no margin (0 where it has no end).
+#[allow(dead_code)] // not every tier firmware asks a prediction
+pub fn window(prediction: &Prediction<f32>) -> u32 {
+    Window::from_prediction(prediction, &Margin::none(), black_box(1e-5)).map_or(0, |w| w.ticks())
+}
+
+/// The marks and the volatile store alone: no crate code at all (`tier_empty`).
+#[allow(dead_code)]
+pub fn measure_nothing() {
+    cost_mark(0);
+    cost_mark(1);
+    let ticks = black_box(0_u32);
+    cost_mark(2);
+    let mut out = 0_u32;
+    // SAFETY: a valid, aligned local.
+    unsafe { core::ptr::write_volatile(&mut out, ticks) };
+}
+
+/// Validates the dome and runs `work` on it between the marks.
+#[allow(dead_code)]
+pub fn measure(work: impl FnOnce(&Scene<f32, Viscous<f32>>) -> u32) {
+    let switch = black_box(catalogue::TACTILE_DOME);
+    cost_mark(0);
+    let scene = switch.scene::<f32>();
+    cost_mark(1);
+    let ticks = match scene {
+        Ok(scene) => work(&black_box(scene)),
+        Err(_) => u32::MAX,
+    };
+    cost_mark(2);
+    let mut out = 0_u32;
+    // SAFETY: a valid, aligned local.
+    unsafe { core::ptr::write_volatile(&mut out, ticks) };
+}
+
+#[cfg(target_arch = "arm")]
+mod entry {
+    use cortex_m as _;
+    use cortex_m_semihosting::debug;
+    use panic_halt as _;
+
+    #[cortex_m_rt::entry]
+    fn main() -> ! {
+        crate::work();
+        debug::exit(debug::EXIT_SUCCESS);
+        loop {
+            cortex_m::asm::wfi();
+        }
+    }
+}
+
+#[cfg(target_arch = "avr")]
+mod entry {
+    #[no_mangle]
+    pub extern "C" fn main() -> ! {
+        crate::work();
+        crate::avr::halt()
+    }
+}

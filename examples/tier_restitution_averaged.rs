@@ -1,0 +1,30 @@
+//! Cost firmware: the averaged tier (N8) of the dome without its damping: a restitution-only scene, whose type links no damping. Built by `scripts/cost-report.sh` for thumbv6m, thumbv7em and the
+//! Uno (the skeleton is `common/tier_firmware.rs`); on the host it is an empty program.
+#![cfg_attr(any(target_os = "none", target_arch = "avr"), no_std, no_main)]
+#![cfg_attr(target_arch = "avr", feature(asm_experimental_arch))]
+
+#[cfg(target_arch = "avr")]
+#[path = "common/avr.rs"]
+#[allow(dead_code)] // the UART is not used here
+mod avr;
+
+#[cfg(any(target_os = "none", target_arch = "avr"))]
+#[path = "common/tier_firmware.rs"]
+mod firmware;
+
+#[cfg(any(target_os = "none", target_arch = "avr"))]
+fn work() {
+    firmware::measure(|scene| {
+        let contact =
+            core::hint::black_box(contact_bounce::catalogue::TACTILE_DOME).contact::<f32>();
+        let _ = scene;
+        contact_bounce::Scene::new(contact, contact_bounce::Undamped).map_or(u32::MAX, |s| {
+            firmware::window(
+                &s.predict(contact_bounce::Method::Averaged(contact_bounce::Nodes::N8)),
+            )
+        })
+    });
+}
+
+#[cfg(not(any(target_os = "none", target_arch = "avr")))]
+fn main() {}
