@@ -250,43 +250,66 @@ impl SceneInput {
     pub fn core<F: contact_bounce::Float>(
         &self,
     ) -> Result<Scene<F, AnyDissipation<F>>, FieldError> {
-        let c = F::from_f64;
+        // A value the float cannot hold (it would round to 0, to a subnormal or to inf) is an
+        // error naming its field: "mass must be > 0" for a mass of 1e-300 in f32 would name
+        // the right field but the wrong fault.
+        let c = |field: &str, v: f64| -> Result<F, FieldError> {
+            let x = F::from_f64(v);
+            let tiny = v != 0.0 && x.abs() < F::MIN_POSITIVE;
+            if v.is_finite() && (tiny || !x.is_finite()) {
+                let float = if F::EPSILON.to_f64() > 1e-10 {
+                    "f32"
+                } else {
+                    "f64"
+                };
+                return Err(FieldError::new(
+                    field,
+                    format!("{v:e} is beyond {float}'s normal range (use --precision f64)"),
+                ));
+            }
+            Ok(x)
+        };
         let offset = match self.placement {
-            Placement::Gap(d) => Offset::Delta(c(d)),
-            Placement::PreloadForce(f) => Offset::PreloadForce(c(f)),
+            Placement::Gap(d) => Offset::Delta(c("gap", d)?),
+            Placement::PreloadForce(f) => Offset::PreloadForce(c("preload_force", f)?),
         };
         let threshold = match self.threshold {
             Threshold::None => Threshold::None,
-            Threshold::Impulse(p) => Threshold::Impulse(c(p)),
-            Threshold::FractionOfFirst(f) => Threshold::FractionOfFirst(c(f)),
+            Threshold::Impulse(p) => Threshold::Impulse(c("threshold_impulse", p)?),
+            Threshold::FractionOfFirst(f) => {
+                Threshold::FractionOfFirst(c("threshold_fraction", f)?)
+            }
         };
-        let kernel = self
-            .kernel
-            .map(|k| Hereditary::exponential(c(k.kappa), c(k.tau)))
-            .transpose()?;
-        let restitution = Restitution::Coefficient(c(self.restitution));
-        let v0 = c(self.closing_speed);
+        let kernel = match self.kernel {
+            Some(k) => Some(Hereditary::exponential(
+                c("kernel.kappa", k.kappa)?,
+                c("kernel.tau", k.tau)?,
+            )?),
+            None => None,
+        };
+        let restitution = Restitution::Coefficient(c("restitution", self.restitution)?);
+        let v0 = c("closing_speed", self.closing_speed)?;
         let scene = match self.stiffness {
             Spring::TwoBody(b, _, _) => {
                 let bodies = TwoBody {
-                    m1: c(b.m1),
-                    c1: c(b.c1),
-                    d1: c(b.d1),
-                    m2: c(b.m2),
-                    c2: c(b.c2),
-                    d2: c(b.d2),
+                    m1: c("two_body.m1", b.m1)?,
+                    c1: c("two_body.c1", b.c1)?,
+                    d1: c("two_body.d1", b.d1)?,
+                    m2: c("two_body.m2", b.m2)?,
+                    c2: c("two_body.c2", b.c2)?,
+                    d2: c("two_body.d2", b.d2)?,
                 };
                 Scene::two_body(bodies, offset, restitution, v0, threshold, kernel)?
             }
             Spring::Omega(_) | Spring::MassStiffness(..) => {
                 let frequency = match self.stiffness {
                     Spring::MassStiffness(m, k) => Frequency::MassStiffness {
-                        mass: c(m),
-                        stiffness: c(k),
+                        mass: c("mass", m)?,
+                        stiffness: c("stiffness", k)?,
                     },
-                    Spring::Omega(w) | Spring::TwoBody(_, w, _) => Frequency::Omega(c(w)),
+                    Spring::Omega(w) | Spring::TwoBody(_, w, _) => Frequency::Omega(c("omega", w)?),
                 };
-                let viscous = Some(Viscous::new(c(self.damping_ratio))?);
+                let viscous = Some(Viscous::new(c("damping_ratio", self.damping_ratio)?)?);
                 Scene::new(
                     Contact {
                         frequency,

@@ -107,6 +107,33 @@ fn rounding_r_to_f32_is_in_the_expected_error_and_breaks_no_promise() {
 }
 
 #[test]
+fn a_value_f32_cannot_hold_is_named_as_such() {
+    // A mass of 1e-300 underflows to 0 in f32: the error said "mass must be > 0", naming the
+    // field the user gave but a fault they did not make.
+    for (scene, field, value) in [
+        (
+            r#"{"mass":1e-300,"stiffness":1e300,"preload_force":1,"restitution":0.7,"closing_speed":0.5}"#,
+            "mass",
+            "1e-300",
+        ),
+        (
+            r#"{"mass":5e-5,"stiffness":5000,"preload_force":1e300,"restitution":0.7,"closing_speed":0.5}"#,
+            "preload_force",
+            "1e300",
+        ),
+    ] {
+        let (rows, code) = eval(&["--method", "closed", "--precision", "f32"], scene);
+        assert_eq!(code, 1, "{field}");
+        assert_eq!(rows[0]["field"], field);
+        let error = rows[0]["error"].as_str().expect("error");
+        assert!(
+            error.contains(value) && error.contains("beyond f32's normal range"),
+            "{error}"
+        );
+    }
+}
+
+#[test]
 fn exact_and_map_list_their_first_impacts() {
     for method in ["exact", "map"] {
         let (rows, _) = eval(&["--method", method], &catalogue());
