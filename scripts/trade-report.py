@@ -191,9 +191,9 @@ def main():
     if speedups:
         md.append(f"- every tier is {min(speedups):.0f} to {max(speedups):.3g} times faster than the peer on these scenes; the peer also")
         md.append("  misses grazing returns (the undamped gap above).")
-    md.append("\n`Method::Auto` picks the cheapest tier (cost counted in map impacts and averaged integrand")
-    md.append("evaluations, which cost about the same: on a Cortex-M4F, on the tactile dome, 470-490 instructions")
-    md.append("each, `docs/cost-report.md`)")
+    md.append("\n`Method::Auto` picks the cheapest tier (cost counted in map impacts, an averaged integrand")
+    md.append("evaluation weighing 0.6 of one: on a Cortex-M4F, on the tactile dome, about 300 and 185")
+    md.append("instructions, `docs/cost-report.md`)")
     md.append("whose per-scene expected error meets the tolerance, and the exact tier where none does; across this")
     md.append("grid and 10,000 scenes off it, it promised and kept every promise at 10 %, 1 % and 0.1 % on every")
     md.append("scene with a finite bounce (`host-tests/tests/against_reference.rs`).")
