@@ -4,6 +4,7 @@
 //! one to expect on this scene (`None` outside every stated validity), so a caller knows when
 //! to trust it. A form that does not apply to the scene's regime returns `None`.
 
+use crate::error::{derived, finite, non_negative, physical, Error, Parameter, Reason};
 use crate::mechanisms::{offset_class, Asymptote, Dissipation, Offset};
 use crate::orbit::Orbit;
 use crate::prediction::{Approximations, ClosedForm, Count, Prediction, Tier, Time};
@@ -53,6 +54,72 @@ pub(crate) fn log_growth<F: Float>(s: F, k: F) -> F {
     } else {
         (k.ln() + s.ln()) / k
     }
+}
+
+/// t_b1v straight from a preloaded contact's datasheet-like inputs, with no [`Scene`]: the lean
+/// path for firmware that needs a window and nothing else (it links the checks, two square
+/// roots and one `ln_1p`; [`Scene::t_b1v`] gives the same value from a scene).
+///
+/// t_b1v = (3 / (2 zeta Omega)) ln(1 + 2 zeta J_B / (3 r Omega |Delta|)), J_B = 2 R v0,
+/// Omega = sqrt(k / m), |Delta| = F / k: restitution and viscous damping, the bounce of a
+/// preload (physics.md sec. 5); zeta = 0 gives t_b1. Expected error as [`Scene::t_b1v`]'s
+/// (within 2.5 % plus the atan linearisation for j0 <= 1; `None` beyond).
+///
+/// ```
+/// use contact_bounce::{catalogue, preload_viscous_bounce_time, Method};
+/// let d = catalogue::TACTILE_DOME;
+/// let lean = preload_viscous_bounce_time(
+///     d.mass, d.stiffness, d.preload_force, d.closing_speed, d.restitution, d.damping_ratio,
+/// )?;
+/// let scene = d.scene::<f64>()?;
+/// let full = scene.t_b1v().map(|e| e.time);
+/// assert!(full.is_some_and(|t| (lean.time / t - 1.0).abs() < 1e-12));
+/// # Ok::<(), contact_bounce::Error>(())
+/// ```
+///
+/// # Errors
+/// As [`Scene::new`] for these inputs: [`Parameter::Mass`], [`Parameter::Stiffness`],
+/// [`Parameter::PreloadForce`] or [`Parameter::ClosingSpeed`] outside
+/// [`PHYSICAL_RANGE`](crate::PHYSICAL_RANGE); [`Parameter::Restitution`] outside
+/// [1e-6, 1 - 1e-12]; [`Parameter::DampingRatio`] negative, below 1e-12 but not 0, or above
+/// 1e3; [`Parameter::PreloadForce`] with [`Reason::Overflow`] when the time leaves the
+/// float's range.
+pub fn preload_viscous_bounce_time<F: Float>(
+    mass: F,
+    stiffness: F,
+    preload_force: F,
+    closing_speed: F,
+    restitution: F,
+    damping_ratio: F,
+) -> Result<Estimate<F>, Error> {
+    let mass = physical(mass, Parameter::Mass)?;
+    let stiffness = physical(stiffness, Parameter::Stiffness)?;
+    let force = physical(preload_force, Parameter::PreloadForce)?;
+    let speed = physical(closing_speed, Parameter::ClosingSpeed)?;
+    let restitution = finite(restitution, Parameter::Restitution)?;
+    let loss = F::ONE - restitution;
+    if restitution < F::from_f64(crate::scene::SMALLEST_RESTITUTION)
+        || loss < F::from_f64(crate::scene::SMALLEST_RATE)
+    {
+        return Err(Error::new(Parameter::Restitution, Reason::OutOfRange));
+    }
+    let zeta = non_negative(damping_ratio, Parameter::DampingRatio)?;
+    if (zeta > F::ZERO && zeta < F::from_f64(crate::scene::SMALLEST_RATE))
+        || zeta > F::from_f64(crate::scene::LARGEST_DAMPING)
+    {
+        return Err(Error::new(Parameter::DampingRatio, Reason::OutOfRange));
+    }
+    // Omega |Delta| = F / sqrt(k m) and 1 / Omega = sqrt(m / k), as products of square roots
+    // (k m can leave f32's range where each is inside it).
+    let (root_m, root_k) = (mass.sqrt(), stiffness.sqrt());
+    let scale = derived(force / (root_k * root_m), Parameter::PreloadForce)?;
+    let start = F::TWO * restitution * speed;
+    let j0 = start / scale;
+    let time = log_growth(j0 / loss, F::TWO * zeta / F::from_f64(3.0)) * (root_m / root_k);
+    Ok(Estimate {
+        time: derived(time, Parameter::PreloadForce)?,
+        expected_error: accuracy::t_b1v(j0, restitution, zeta),
+    })
 }
 
 /// Time for J to fall from `j1` to `j2` (0 <= j2 <= j1) on the asymptote

@@ -42,7 +42,7 @@ mod scene;
 mod window;
 
 pub use averaged::{Averaged, Bodies, EnvelopePoint, Motion};
-pub use closed::Estimate;
+pub use closed::{preload_viscous_bounce_time, Estimate};
 pub use debounce::{Debouncer, Edge, Mode, Polarity, State, Windows};
 pub use error::{Error, Parameter, Reason, PHYSICAL_RANGE};
 pub use exact::{EXACT_MAX_IMPACTS, ROOT_STEPS};

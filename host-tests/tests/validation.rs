@@ -562,3 +562,63 @@ fn the_model_domain_is_enforced() {
         Error::new(Parameter::KernelTimeConstant, Reason::OutOfRange)
     );
 }
+
+#[test]
+fn the_lean_t_b1v_agrees_with_the_scenes_and_refuses_what_the_scene_refuses() {
+    use contact_bounce::{catalogue, preload_viscous_bounce_time};
+    for d in catalogue::ALL {
+        let lean = preload_viscous_bounce_time(
+            d.mass,
+            d.stiffness,
+            d.preload_force,
+            d.closing_speed,
+            d.restitution,
+            d.damping_ratio,
+        )
+        .expect("valid");
+        let full = d.scene::<f64>().expect("valid").t_b1v().expect("a preload");
+        assert!((lean.time / full.time - 1.0).abs() < 1e-12, "{}", d.name);
+        assert_eq!(lean.expected_error.is_some(), full.expected_error.is_some());
+        if let (Some(a), Some(b)) = (lean.expected_error, full.expected_error) {
+            assert!((a / b - 1.0).abs() < 1e-9, "{}", d.name);
+        }
+        #[allow(clippy::cast_possible_truncation)]
+        let narrow = preload_viscous_bounce_time(
+            d.mass as f32,
+            d.stiffness as f32,
+            d.preload_force as f32,
+            d.closing_speed as f32,
+            d.restitution as f32,
+            d.damping_ratio as f32,
+        )
+        .expect("valid in f32");
+        assert!(
+            (f64::from(narrow.time) / full.time - 1.0).abs() < 1e-5,
+            "{}",
+            d.name
+        );
+    }
+    let d = catalogue::TACTILE_DOME;
+    let refused = |m: f64, k: f64, f: f64, v: f64, r: f64, z: f64| {
+        preload_viscous_bounce_time(m, k, f, v, r, z)
+            .map(|_| ())
+            .map_err(|e| e.parameter())
+    };
+    let (m, k, f, v, r, z) = (
+        d.mass,
+        d.stiffness,
+        d.preload_force,
+        d.closing_speed,
+        d.restitution,
+        d.damping_ratio,
+    );
+    assert_eq!(refused(0.0, k, f, v, r, z), Err(Parameter::Mass));
+    assert_eq!(refused(m, f64::NAN, f, v, r, z), Err(Parameter::Stiffness));
+    assert_eq!(refused(m, k, -1.0, v, r, z), Err(Parameter::PreloadForce));
+    assert_eq!(refused(m, k, f, 1e31, r, z), Err(Parameter::ClosingSpeed));
+    assert_eq!(refused(m, k, f, v, 1.0, z), Err(Parameter::Restitution));
+    assert_eq!(refused(m, k, f, v, 0.0, z), Err(Parameter::Restitution));
+    assert_eq!(refused(m, k, f, v, r, -0.1), Err(Parameter::DampingRatio));
+    assert_eq!(refused(m, k, f, v, r, 1e-13), Err(Parameter::DampingRatio));
+    assert_eq!(refused(m, k, f, v, r, 0.0), Ok(()));
+}
