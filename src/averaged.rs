@@ -169,7 +169,8 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
     /// Ti2(J1 / |q|) - Ti2(J2 / |q|), Ti2 the inverse tangent integral; with
     /// theta = pi - atan(J / q) in a gap it is pi ln(J1 / J2) minus that; at Delta = 0,
     /// (pi / 2) ln(J1 / J2). Exact for the averaged model (Ti2 to 1e-16): the nodes do not
-    /// matter here.
+    /// matter here. Taken for [`Undamped`](crate::Undamped) scenes (a damped type with zeta 0
+    /// integrates numerically, to the same value within the quadrature's error).
     fn restitution_only_fall(&self, high: F, low: F) -> (Time<F>, Count<F>, bool) {
         let scene = self.scene;
         let loss = scene.loss();
@@ -215,8 +216,9 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
     /// Time and impacts while J falls from `high` to `low` (0 <= low < high), and whether the
     /// panel cap was hit: quadrature down to the cutoff, the asymptote below it.
     pub(crate) fn fall(&self, high: F, low: F) -> (Time<F>, Count<F>, bool) {
-        if !self.scene.dissipation().dissipates() {
-            // (A scene type without damping links none of the quadrature below.)
+        if D::NEVER_DISSIPATES {
+            // (A scene type without damping links none of the quadrature below, and a damped
+            // one none of this.)
             return self.restitution_only_fall(high, low);
         }
         // The asymptote only replaces the quadrature on the way to J = 0 (where its tail is

@@ -485,7 +485,8 @@ fn restitution_only_averaged_matches_a_direct_quadrature_of_its_integral() {
     // Without damping the averaged tier is closed form (the inverse tangent integral): checked
     // against Simpson's rule on t = (2 / (r Omega)) integral theta(J) dJ / J in ln J (20,000
     // panels: error ~1e-15) for a preload to the end and to a threshold, a gap and Delta = 0 to
-    // a threshold; counts against ln(J_B / J_end) / r.
+    // a threshold; counts against ln(J_B / J_end) / r; and against the quadrature a damped
+    // scene type with zeta = 0 takes.
     for (delta, r, j0, fraction) in [
         (-1e-3, 0.3, 1.0, None),
         (-1e-3, 0.05, 30.0, None),
@@ -534,6 +535,17 @@ fn restitution_only_averaged_matches_a_direct_quadrature_of_its_integral() {
         }
         .expect("ends");
         assert!(rel(got, want) < 1e-9, "{delta} {r} {j0}: {got} vs {want}");
+        // A damped type with zeta = 0 takes the quadrature: the same, to its error.
+        let quadrature = Scene::new(contact(delta, r, v0, threshold), Viscous::new(0.0).unwrap())
+            .expect("valid")
+            .predict(Method::Averaged(Nodes::N20));
+        let other = if fraction.is_some() {
+            quadrature.last_above_time.seconds()
+        } else {
+            quadrature.end_time.seconds()
+        }
+        .expect("ends");
+        assert!(rel(other, got) < 1e-9, "{delta} {r} {j0}: {other} vs {got}");
         if fraction.is_some() {
             let count = 1.0 + (start / end).ln() / r;
             let n_above = p.impacts_above.value().expect("finite");

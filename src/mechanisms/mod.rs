@@ -66,6 +66,10 @@ impl<F: Float> Asymptote<F> {
 /// A dissipation mechanism acting between impacts (sealed: implemented by [`Undamped`],
 /// [`Viscous`], [`Hereditary`], tuples and `Option`s of them).
 pub trait Dissipation<F: Float>: sealed::Sealed + Copy + Debug {
+    /// True for a type that never dissipates whatever its value ([`Undamped`]): code for the
+    /// other mechanisms is then left out at compile time (a `Viscous` of zeta 0 is undamped
+    /// only at run time, and takes the general paths).
+    const NEVER_DISSIPATES: bool = false;
     /// The viscous damping ratio zeta (0 without viscous damping): it decides the
     /// single-impact regime (zeta >= 1 with Delta >= 0).
     fn damping_ratio(&self) -> F;
@@ -93,6 +97,7 @@ pub struct Undamped;
 impl sealed::Sealed for Undamped {}
 
 impl<F: Float> Dissipation<F> for Undamped {
+    const NEVER_DISSIPATES: bool = true;
     #[inline]
     fn damping_ratio(&self) -> F {
         F::ZERO
@@ -118,6 +123,7 @@ impl<F: Float> Dissipation<F> for Undamped {
 impl<A: sealed::Sealed> sealed::Sealed for Option<A> {}
 
 impl<F: Float, A: Dissipation<F>> Dissipation<F> for Option<A> {
+    const NEVER_DISSIPATES: bool = A::NEVER_DISSIPATES;
     fn damping_ratio(&self) -> F {
         self.as_ref().map_or(F::ZERO, Dissipation::damping_ratio)
     }
@@ -142,6 +148,7 @@ impl<F: Float, A: Dissipation<F>> Dissipation<F> for Option<A> {
 impl<A: sealed::Sealed, B: sealed::Sealed> sealed::Sealed for (A, B) {}
 
 impl<F: Float, A: Dissipation<F>, B: Dissipation<F>> Dissipation<F> for (A, B) {
+    const NEVER_DISSIPATES: bool = A::NEVER_DISSIPATES && B::NEVER_DISSIPATES;
     fn damping_ratio(&self) -> F {
         self.0.damping_ratio() + self.1.damping_ratio()
     }
