@@ -62,11 +62,11 @@ pub(crate) fn log_growth<F: Float>(s: F, k: F) -> F {
 ///
 /// t_b1v = (3 / (2 zeta Omega)) ln(1 + 2 zeta J_B / (3 r Omega |Delta|)), J_B = 2 R v0,
 /// Omega = sqrt(k / m), |Delta| = F / k: restitution and viscous damping, the bounce of a
-/// preload (physics.md sec. 5); zeta = 0 gives t_b1. Expected error as [`Scene::t_b1v`]'s
+/// preload; zeta = 0 gives t_b1. Expected error as [`Scene::t_b1v`]'s
 /// (within 2.5 % plus the atan linearisation for j0 <= 1; `None` beyond).
 ///
 /// ```
-/// use contact_bounce::{catalogue, preload_viscous_bounce_time, Method};
+/// use contact_bounce::{catalogue, preload_viscous_bounce_time};
 /// let d = catalogue::TACTILE_DOME;
 /// let lean = preload_viscous_bounce_time(
 ///     d.mass, d.stiffness, d.preload_force, d.closing_speed, d.restitution, d.damping_ratio,
