@@ -487,7 +487,9 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
     ///
     /// # Errors
     /// [`Parameter::Time`] when `t` is NaN, infinite or negative, or with [`Reason::Overflow`]
-    /// when an undamped, moving centre of mass has a phase `Omega t` beyond the float's range.
+    /// when an undamped, moving centre of mass has a phase `Omega t` beyond the float's range;
+    /// [`Parameter::ClosingSpeed`] with [`Reason::Overflow`] when a position leaves the float's
+    /// range (an orbit amplitude h / (2 Omega) beyond it).
     pub fn motion(&self, t: F, bodies: &Bodies<F>) -> Result<Motion<F>, Error> {
         let point = self.envelope(t)?;
         let scene = self.scene;
@@ -519,11 +521,17 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
             // An undamped centre of mass whose phase Omega t is beyond the float's range.
             return Err(Error::new(Parameter::Time, Reason::Overflow));
         }
-        Ok(Motion {
+        let motion = Motion {
             relative,
             body1: centre + (F::ONE - bodies.mass_fraction_1) * relative,
             body2: centre - bodies.mass_fraction_1 * relative,
-        })
+        };
+        if !(motion.relative.is_finite() && motion.body1.is_finite() && motion.body2.is_finite()) {
+            // The orbit's amplitude h / (2 Omega) beyond the float's range (a huge closing
+            // speed over a tiny Omega): no position this float can tell.
+            return Err(Error::new(Parameter::ClosingSpeed, Reason::Overflow));
+        }
+        Ok(motion)
     }
 }
 

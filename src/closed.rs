@@ -164,9 +164,24 @@ pub(crate) fn asymptotic_count<F: Float>(
                 Count::Infinite
             } else if a.constant > F::ZERO {
                 // (k/A) ln(j1 (A + B j2) / (j2 (A + B j1))) = (k/A) ln1p(u),
-                // u = A (j1 - j2) / (j2 (A + B j1)): no cancellation as A -> 0.
-                let scale = (j1 - j2) / (j2 * (a.constant + a.linear * j1));
-                Count::Finite(k * scale * ln1p_ratio(a.constant * scale))
+                // u = A (j1 - j2) / (j2 (A + B j1)): no cancellation as A -> 0. The ratio
+                // (j1 - j2) / j2 first, so that j2 (A + B j1) cannot underflow (f32).
+                let rate = a.constant + a.linear * j1;
+                let scale = (j1 - j2) / j2 / rate;
+                let u = a.constant * scale;
+                if scale.is_finite() && u.is_finite() {
+                    Count::Finite(k * scale * ln1p_ratio(u))
+                } else {
+                    // u beyond the float's range: ln1p(u) = ln u to far below rounding, in
+                    // logarithms (k / A stays near 1 / r).
+                    let ln_u = a.constant.ln() + (j1 - j2).ln() - j2.ln() - rate.ln();
+                    let n = k / a.constant * ln_u;
+                    if n.is_finite() {
+                        Count::Finite(n)
+                    } else {
+                        Count::Infinite
+                    }
+                }
             } else if a.linear > F::ZERO {
                 Count::Finite(k / a.linear * (F::ONE / j2 - F::ONE / j1))
             } else {
@@ -191,6 +206,10 @@ pub(crate) fn asymptotic_count<F: Float>(
 /// Gauss-Legendre on [0, min(x, 1/x)] (error below 1e-16: the integrand is analytic in a
 /// Bernstein ellipse of radius 4.6), and Ti2(x) = Ti2(1/x) + (pi/2) ln x above 1.
 pub(crate) fn inverse_tangent_integral<F: Float>(x: F) -> F {
+    if x <= F::ZERO {
+        // (The rule's nodes would evaluate atan(0) / 0.)
+        return F::ZERO;
+    }
     let (inner, reflect) = if x > F::ONE {
         (F::ONE / x, true)
     } else {
@@ -254,7 +273,9 @@ pub(crate) fn atan_geometric_sum<F: Float>(x: F, restitution: F, loss: F, n: Opt
         let total = euler_maclaurin(x, decay);
         return match n {
             None => total,
-            Some(n) => total - euler_maclaurin(x * (-decay * n).exp(), decay),
+            // x e^(-decay n) as one exponential: e^(-decay n) alone can underflow where the
+            // product is a normal number (f32: x = 6e24 after 1e5 flights of r = 1e-3).
+            Some(n) => total - euler_maclaurin((x.ln() - decay * n).exp(), decay),
         };
     }
     let small = F::from_f64(SMALL_TERM);

@@ -327,3 +327,241 @@ fn the_debouncers_on_random_samples_and_windows_report_alternating_edges() {
         assert_eq!(key.is_closed(), learned_level);
     }
 }
+
+/// A value for the raw-bits harness: a quarter of the time the float of a raw bit pattern, a
+/// quarter a plausible magnitude (1e-6 to 1e6, now and then negative), else one of the edges
+/// (zeros, a subnormal, NaN, the infinities, the ends of the physical range, R near 1).
+fn raw<F: Float>(rng: &mut Rng, from_bits: impl Fn(u64) -> F) -> F {
+    let edges = [
+        0.0,
+        -0.0,
+        f64::NAN,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        1e-30,
+        1e30,
+        1.0 - 1e-12,
+        1.0,
+        -1.0,
+        0.5,
+        1e3,
+        1e-3,
+    ];
+    let pick = rng.next();
+    if pick.is_multiple_of(4) {
+        from_bits(rng.next())
+    } else if pick % 4 == 1 {
+        // Plausible: 1e-6 to 1e6, either sign now and then.
+        let x = rng.log_uniform(1e-6, 1e6);
+        F::from_f64(if pick % 32 == 1 { -x } else { x })
+    } else if pick % 7 == 2 {
+        // The smallest subnormal of F.
+        F::MIN_POSITIVE * F::EPSILON
+    } else {
+        let i = usize::try_from((pick >> 8) % 13).unwrap_or(0);
+        F::from_f64(edges.get(i).copied().unwrap_or(0.0))
+    }
+}
+
+/// Raw bit patterns and edge values into every public constructor and const fn: each must
+/// return a typed error or a value that is a number; an accepted scene then goes through every
+/// check of `check_scene`.
+fn raw_inputs<F: Float + std::fmt::Debug>(
+    rng: &mut Rng,
+    n: usize,
+    from_bits: impl Fn(u64) -> F + Copy,
+) -> (usize, usize, Vec<String>) {
+    use contact_bounce::{preload_viscous_bounce_time, Margin, Window};
+    let (mut accepted, mut checked, mut faults) = (0, 0, Vec::new());
+    let number = |x: F| x.is_finite() && x >= F::ZERO;
+    for _ in 0..n {
+        let mut v = || raw(rng, from_bits);
+        let (a, b, c, d, e, z, th) = (v(), v(), v(), v(), v(), v(), v());
+        let (kappa, tau, tol) = (v(), v(), v());
+        let kind = rng.next();
+        let frequency = if kind.is_multiple_of(2) {
+            Frequency::Omega(a)
+        } else {
+            Frequency::MassStiffness {
+                mass: a,
+                stiffness: b,
+            }
+        };
+        let offset = if (kind >> 1).is_multiple_of(2) {
+            Offset::Delta(c)
+        } else {
+            Offset::PreloadForce(c)
+        };
+        let restitution = if (kind >> 2).is_multiple_of(2) {
+            Restitution::Coefficient(d)
+        } else {
+            Restitution::Loss(d)
+        };
+        let threshold = match (kind >> 3) % 3 {
+            0 => Threshold::None,
+            1 => Threshold::Impulse(th),
+            _ => Threshold::FractionOfFirst(th),
+        };
+        let contact = Contact {
+            frequency,
+            offset,
+            restitution,
+            closing_speed: e,
+            threshold,
+        };
+        let what = format!("{contact:?} zeta {z:?} kappa {kappa:?} tau {tau:?} tol {tol:?}");
+        // The free functions and small constructors.
+        if let Ok(t) = preload_viscous_bounce_time(a, b, c, e, d, z) {
+            if !number(t.time) || t.expected_error.is_some_and(|x| !number(x)) {
+                faults.push(format!("preload_viscous_bounce_time {t:?}, {what}"));
+            }
+        }
+        if let Ok(m) = Margin::new(th, tol) {
+            if let Ok(w) = Window::from_seconds(z, &m, kappa) {
+                if z > F::ZERO && w.ticks() == 0 {
+                    faults.push(format!("a window of 0 ticks for {z:?} s, {what}"));
+                }
+            }
+        }
+        let _ = Tolerance::new(tol);
+        let kernel = Hereditary::exponential(kappa, tau).and_then(|k| k.with_tolerance(tol));
+        let Ok(viscous) = Viscous::new(z) else {
+            continue;
+        };
+        if let Ok(scene) = Scene::new(contact, viscous) {
+            accepted += 1;
+            check_scene(&scene, &what, &mut checked, &mut faults);
+        }
+        if let Ok(k) = kernel {
+            if let Ok(scene) = Scene::new(contact, (viscous, k)) {
+                accepted += 1;
+                check_scene(&scene, &what, &mut checked, &mut faults);
+            }
+        }
+    }
+    // The const fns, in f64.
+    for _ in 0..n {
+        let mut v = || raw(rng, f64::from_bits);
+        let (m, k, f, s, r, w) = (v(), v(), v(), v(), v(), v());
+        if let Ok(t) = contact_bounce::preload_bounce_time(m, k, f, s, r) {
+            if !(t.seconds.is_finite() && t.seconds > 0.0) {
+                faults.push(format!(
+                    "preload_bounce_time {t:?} of {m:e} {k:e} {f:e} {s:e} {r}"
+                ));
+            }
+        }
+        if let Ok(ticks) = contact_bounce::window_ticks(m, k, w) {
+            if m > 0.0 && k > 0.0 && ticks == 0 {
+                faults.push(format!("window_ticks({m:e}, {k:e}, {w:e}) = 0"));
+            }
+        }
+    }
+    (accepted, checked, faults)
+}
+
+#[test]
+fn raw_bit_patterns_get_typed_errors_or_sound_answers() {
+    // FUZZ_SCENES inputs per float (CI: 10,000, each drawing 10 values: 200,000 values);
+    // scripts/fuzz.sh: millions.
+    let mut rng = Rng(0x2545_F491_4F6C_DD1D);
+    let n = scenes();
+    let (a, ca, mut faults) = raw_inputs::<f64>(&mut rng, n, f64::from_bits);
+    let (b, cb, more) = raw_inputs::<f32>(&mut rng, n, |bits| {
+        f32::from_bits(u32::try_from(bits >> 32).unwrap_or(0))
+    });
+    faults.extend(more);
+    eprintln!(
+        "raw inputs: {} scenes accepted of {}, {} predictions checked, {} faults",
+        a + b,
+        4 * n,
+        ca + cb,
+        faults.len()
+    );
+    assert!(
+        a + b > 0,
+        "no scene accepted: the harness tests nothing past validation"
+    );
+    for f in faults.iter().take(20) {
+        eprintln!("  {}", &f[..f.len().min(400)]);
+    }
+    assert!(
+        faults.is_empty(),
+        "{} faults, first: {}",
+        faults.len(),
+        faults[0]
+    );
+}
+
+/// A regression scene: frequency, Delta, restitution, closing speed, threshold, zeta.
+type Case = (
+    Frequency<f32>,
+    f32,
+    Restitution<f32>,
+    f32,
+    Threshold<f32>,
+    f32,
+);
+
+#[test]
+fn the_raw_bits_harness_findings_stay_fixed() {
+    // Found by `raw_bit_patterns_get_typed_errors_or_sound_answers` (f32), each a NaN:
+    // - the undamped exact sums after 1e5 flights of r = 1e-3: e^(-decay n) underflowed to 0
+    //   and the inverse tangent integral of 0 evaluated atan(0) / 0 (last_above_time);
+    // - the preload's asymptotic count where j2 (A + B j1) underflowed, and where u overflowed
+    //   (impacts_above);
+    // - the laws of motion where the orbit's amplitude leaves f32's range.
+    let cases: [Case; 4] = [
+        (
+            Frequency::Omega(6721.8267),
+            -1.356_278_2e-11,
+            Restitution::Loss(0.001),
+            5.632_034_6e17,
+            Threshold::Impulse(2.285_295_2e-29),
+            0.0,
+        ),
+        (
+            Frequency::MassStiffness {
+                mass: 0.001_283_227_1,
+                stiffness: 1e-30,
+            },
+            -1.0,
+            Restitution::Loss(1.990_166_7e-5),
+            1e-30,
+            Threshold::FractionOfFirst(0.001),
+            1000.0,
+        ),
+        (
+            Frequency::MassStiffness {
+                mass: 3.561_023e28,
+                stiffness: 0.000_241_301_92,
+            },
+            -2072.0,
+            Restitution::Loss(1.049_151_2e-7),
+            0.000_746_679_1,
+            Threshold::FractionOfFirst(1e-30),
+            0.001,
+        ),
+        (
+            Frequency::Omega(2.266_056e-19),
+            0.0,
+            Restitution::Coefficient(0.031_254_888),
+            8.699_412e24,
+            Threshold::Impulse(0.000_340_898_35),
+            5.665_188,
+        ),
+    ];
+    let (mut checked, mut faults) = (0, Vec::new());
+    for (frequency, delta, restitution, closing_speed, threshold, zeta) in cases {
+        let contact = Contact {
+            frequency,
+            offset: Offset::Delta(delta),
+            restitution,
+            closing_speed,
+            threshold,
+        };
+        let scene = Scene::new(contact, Viscous::new(zeta).expect("valid")).expect("accepted");
+        check_scene(&scene, &format!("{contact:?}"), &mut checked, &mut faults);
+    }
+    assert_eq!(checked, 20);
+    assert!(faults.is_empty(), "{faults:?}");
+}
