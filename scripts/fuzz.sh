@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The seeded random harness of host-tests/tests/fuzz.rs, long: FUZZ_SCENES scenes per float
 # (default 1,000,000; each is predicted by four tiers, alone, with a kernel and as two bodies,
-# and as many raw bit patterns and edge values into every constructor and const fn)
-# in f32 and f64) and the debouncer and learner on a twentieth as many random windows. CI runs
+# in f32 and f64), as many raw bit patterns and edge values into every constructor and const
+# fn, and the debouncer and learner on a twentieth as many random windows. CI runs
 # the same tests with 10,000 scenes. Prints the counts and fault classes; fails on any fault.
 set -euo pipefail
 cd "$(dirname "$0")/.."
