@@ -435,7 +435,12 @@ fn raw_inputs<F: Float + std::fmt::Debug>(
         if let Ok(k) = kernel {
             if let Ok(scene) = Scene::new(contact, (viscous, k)) {
                 accepted += 1;
-                check_scene(&scene, &what, &mut checked, &mut faults);
+                check_scene(
+                    &scene,
+                    &format!("{what} (with the kernel)"),
+                    &mut checked,
+                    &mut faults,
+                );
             }
         }
     }
