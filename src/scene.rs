@@ -381,7 +381,8 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
     /// ([`Reason::OutOfRange`]); a
     /// threshold fraction outside (0, 1) or an impulse not positive or at or above the first
     /// impulse; a preload force without a stiffness; an [`Regime::Endless`] regime with no
-    /// threshold ([`Reason::Required`]); combinations that overflow ([`Reason::Overflow`]).
+    /// threshold ([`Reason::Required`]); combinations that overflow ([`Reason::Overflow`]),
+    /// among them a first impulse 2 R v0 below [`Scene::impulse_floor`] (the closing speed).
     pub fn new(contact: Contact<F>, dissipation: D) -> Result<Self, Error> {
         Self::build(contact, dissipation, None)
     }
@@ -444,6 +445,12 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         let orbit = Orbit::new(omega, delta);
         let asymptote = restitution_asymptote(loss, &orbit).plus(dissipation.asymptote(&orbit));
         check_regime_scale(regime, &asymptote, dissipation.has_kernel(), loss, delta)?;
+        // A first generating impulse below the floor: its phase J / (2 Omega |Delta|) is not a
+        // normal number, and no tier could resolve the flights (f32: a closing speed of 1e-30
+        // m/s against 2 Omega |Delta| = 6e13 m/s gave NaN).
+        if F::TWO * restitution * closing_speed < impulse_floor(&orbit) {
+            return Err(Error::new(Parameter::ClosingSpeed, Reason::Overflow));
+        }
         if let Some(p_end) = threshold {
             let generating = p_end * F::TWO * restitution / (F::ONE + restitution);
             if generating < impulse_floor(&orbit) {

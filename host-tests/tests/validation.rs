@@ -622,3 +622,36 @@ fn the_lean_t_b1v_agrees_with_the_scenes_and_refuses_what_the_scene_refuses() {
     assert_eq!(refused(m, k, f, v, r, 1e-13), Err(Parameter::DampingRatio));
     assert_eq!(refused(m, k, f, v, r, 0.0), Ok(()));
 }
+
+#[test]
+fn a_first_impulse_below_the_floor_is_refused() {
+    // Found by the raw-bits harness (f32): v0 = 1e-30 m/s against 2 Omega |Delta| = 6e13 m/s,
+    // a phase no float can hold; every tier returned a NaN time. Now refused, naming v0.
+    let contact = Contact {
+        frequency: Frequency::MassStiffness {
+            mass: 1000.0_f32,
+            stiffness: 1e-30,
+        },
+        offset: Offset::PreloadForce(1.0),
+        restitution: Restitution::Loss(4.335_312e-5),
+        closing_speed: 1e-30,
+        threshold: Threshold::None,
+    };
+    let e = Scene::new(contact, Viscous::new(0.0).expect("valid")).expect_err("refused");
+    assert_eq!(
+        (e.parameter(), e.reason()),
+        (Parameter::ClosingSpeed, Reason::Overflow)
+    );
+    // The same in f64 is well inside its range, and accepted.
+    let wide = Contact {
+        frequency: Frequency::MassStiffness {
+            mass: 1000.0_f64,
+            stiffness: 1e-30,
+        },
+        offset: Offset::PreloadForce(1.0),
+        restitution: Restitution::Loss(4.335_312e-5),
+        closing_speed: 1e-30,
+        threshold: Threshold::None,
+    };
+    assert!(Scene::new(wide, Viscous::new(0.0).expect("valid")).is_ok());
+}
