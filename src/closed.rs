@@ -82,8 +82,9 @@ pub(crate) fn log_growth<F: Float>(s: F, k: F) -> F {
 /// [`Parameter::PreloadForce`] or [`Parameter::ClosingSpeed`] outside
 /// [`PHYSICAL_RANGE`](crate::PHYSICAL_RANGE); [`Parameter::Restitution`] outside
 /// [1e-6, 1 - 1e-12]; [`Parameter::DampingRatio`] negative, below 1e-12 but not 0, or above
-/// 1e3; [`Parameter::PreloadForce`] with [`Reason::Overflow`] when the time leaves the
-/// float's range.
+/// 1e3; [`Parameter::ClosingSpeed`] with [`Reason::Overflow`] for a first impulse below
+/// [`Scene::impulse_floor`]; [`Parameter::PreloadForce`] with [`Reason::Overflow`] when the
+/// time leaves the float's range.
 pub fn preload_viscous_bounce_time<F: Float>(
     mass: F,
     stiffness: F,
@@ -114,6 +115,10 @@ pub fn preload_viscous_bounce_time<F: Float>(
     let (root_m, root_k) = (mass.sqrt(), stiffness.sqrt());
     let scale = derived(force / (root_k * root_m), Parameter::PreloadForce)?;
     let start = F::TWO * restitution * speed;
+    // As Scene::new: a first impulse below the floor has no phase the float can hold.
+    if start < F::MIN_POSITIVE * F::from_f64(1e3) * (F::TWO * scale).max(F::ONE) {
+        return Err(Error::new(Parameter::ClosingSpeed, Reason::Overflow));
+    }
     let j0 = start / scale;
     let time = log_growth(j0 / loss, F::TWO * zeta / F::from_f64(3.0)) * (root_m / root_k);
     Ok(Estimate {

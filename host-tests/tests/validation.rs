@@ -642,6 +642,17 @@ fn a_first_impulse_below_the_floor_is_refused() {
         (e.parameter(), e.reason()),
         (Parameter::ClosingSpeed, Reason::Overflow)
     );
+    // The lean closed form takes the same domain.
+    let lean = contact_bounce::preload_viscous_bounce_time(
+        1000.0_f32,
+        1e-30,
+        1.0,
+        1e-30,
+        1.0 - 4.335_312e-5,
+        0.0,
+    )
+    .expect_err("refused");
+    assert_eq!(lean.parameter(), Parameter::ClosingSpeed);
     // The same in f64 is well inside its range, and accepted.
     let wide = Contact {
         frequency: Frequency::MassStiffness {
