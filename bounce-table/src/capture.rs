@@ -652,6 +652,10 @@ pub fn read_jsonl(
 pub struct Description {
     /// Last change minus first change (s); 0 for a clean edge.
     pub bounce: f64,
+    /// Whether the bounce is at least the resolution. A shorter one was seen (the contact
+    /// changed) but not timed: its intervals are all chatter, and its duration is the sampling
+    /// of the instrument, not of the contact.
+    pub timed: bool,
     /// Number of changes.
     pub transitions: usize,
     /// Open intervals inside the event at least `resolution` long (s), in order.
@@ -725,6 +729,7 @@ impl Event {
         let hold = self.hold(resolution, burst_gap);
         Description {
             bounce,
+            timed: bounce >= resolution,
             transitions: self.changes.len(),
             first_burst_flights: first_burst_flights.unwrap_or(flights.len()),
             flights,

@@ -293,6 +293,57 @@ fn the_fitted_model_recovers_a_known_mixture_of_clean_edges_bursts_and_late_burs
 }
 
 #[test]
+fn a_bounce_shorter_than_the_resolution_is_fitted_with_the_clean_edges() {
+    // 40 events: 20 clean, 16 one-burst log-normal (20 us x/ e^0.5), and 4 whose whole bounce
+    // is a glitch of 0.4 to 1.6 us, under the 3 us resolution (all their intervals chatter).
+    // The glitches are not timed: fitted as clean, the burst part is the 16 timed bursts
+    // alone. Fitted as bursts, the glitches would spread the part over four decades in ln t
+    // and push its P99 far past every timed burst.
+    let mut rng = SplitMix(5);
+    let mut events = Vec::new();
+    let mut timed = Vec::new();
+    for i in 0..40 {
+        let t = f64::from(i);
+        let changes = match i % 10 {
+            0..=4 => vec![t],
+            5 => vec![t, t + 0.4e-6 * f64::from(i / 10 + 1)],
+            _ => {
+                let b = ((20e-6_f64).ln() + 0.5 * normal(&mut rng)).exp();
+                timed.push(b);
+                vec![t, t + b / 3.0, t + b]
+            }
+        };
+        events.push(Event {
+            switch: "glitchy".into(),
+            origin: String::new(),
+            kind: Kind::Release,
+            changes,
+        });
+    }
+    let groups = group(&events, 3e-6, GAP);
+    let d: Vec<_> = groups.values().flatten().collect();
+    let m = BounceModel::fit(&d);
+    assert!((m.clean - 24.0 / 40.0).abs() < 1e-12, "{m:?}");
+    assert!((m.single - 16.0 / 40.0).abs() < 1e-12, "{m:?}");
+    // The same fit as to the timed bursts alone (up to the rounding of t + b - t at t <= 39 s).
+    let (got, want) = (m.burst.unwrap(), LogNormal::fit(&timed).unwrap());
+    assert_eq!(got.n, 16);
+    assert!((got.mu - want.mu).abs() < 1e-9 && (got.sigma - want.sigma).abs() < 1e-9, "{m:?}");
+    let w = window(&d, 0.99);
+    assert_eq!(w.bouncing, 16);
+    let largest = timed.iter().copied().fold(0.0, f64::max);
+    assert!(w.recommended() >= largest, "{w:?}");
+    // The glitches fitted as bursts instead: the same rule's P99 is at least 3 times higher.
+    let as_bursts = group(&events, 1e-9, GAP);
+    let all: Vec<_> = as_bursts.values().flatten().collect();
+    let wide = window(&all, 0.99);
+    assert!(
+        wide.recommended() > 3.0 * w.recommended(),
+        "{wide:?} vs {w:?}"
+    );
+}
+
+#[test]
 fn the_mixture_quantile_is_the_inverse_of_its_distribution() {
     let l = |mu: f64, sigma: f64| LogNormal { mu, sigma, n: 10 };
     // Clean 30 %, the rest one log-normal: the quantile is analytic. Standard normal points:

@@ -6,6 +6,15 @@ use super::sorted;
 use crate::capture;
 use host_tests::stats::nearest_rank;
 
+/// Whether an event counts as bouncing in the fits: a bounce the instrument timed. One shorter
+/// than the resolution is fitted with the clean events: its duration is the instrument's
+/// sampling, not the contact's, and spread in ln t over a decade of sampling noise it would set
+/// the tail of the whole fit (any window at least the resolution covers it, and a window is
+/// never below the largest bounce observed).
+pub fn bounces(d: &capture::Description) -> bool {
+    d.bounce > 0.0 && d.timed
+}
+
 /// The resolved flights of an event's first burst: the impact model describes one closing, so
 /// a later burst's flights (and the quiet interval before it) are not its flights.
 fn first_burst(d: &capture::Description) -> &[f64] {
@@ -264,11 +273,11 @@ impl BounceModel {
     #[must_use]
     pub fn fit(d: &[&capture::Description]) -> Self {
         let fit = ImpactFit::new(d);
-        let clean: Vec<_> = d.iter().filter(|x| x.bounce <= 0.0).collect();
+        let clean: Vec<_> = d.iter().filter(|x| !bounces(x)).collect();
         let one_burst: Vec<&capture::Description> = d
             .iter()
             .copied()
-            .filter(|x| x.bounce > 0.0 && x.bursts <= 1)
+            .filter(|x| bounces(x) && x.bursts <= 1)
             .collect();
         let reopening = reopening_threshold(&one_burst);
         let reopens = |x: &capture::Description| matches!((x.hold, reopening), (Some(h), Some(c)) if h.share >= c);
@@ -286,7 +295,7 @@ impl BounceModel {
         let single: Vec<_> = one_burst.iter().filter(|x| !reopens(x)).collect();
         let late: Vec<f64> = d
             .iter()
-            .filter(|x| x.bounce > 0.0 && x.bursts > 1)
+            .filter(|x| bounces(x) && x.bursts > 1)
             .map(|x| x.bounce)
             .collect();
         let closed_share = nearest_rank(

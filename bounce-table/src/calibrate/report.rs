@@ -101,7 +101,7 @@ pub fn assess(groups: &Groups<'_>, percentile: f64, seed: u64) -> String {
     );
     let mut model = String::from(
         "\n## Fitted bounce model\n\nEach event is clean, one burst, or bounces again after a quiet interval of at \
-         least the burst gap (a late burst). Bursts and late-burst bounces are log-normal (median x/ geometric \
+         least the burst gap (a late burst); a bounce shorter than the resolution is not timed and counts as clean. Bursts and late-burst bounces are log-normal (median x/ geometric \
          spread). The burst term is the impact model's (first flight / (1 - R), times 1 + the closed share: \
          the dwell and chatter a Newton impact does not have) where it holds, else the observed bursts'. \
          A press whose contact holds, inside its burst, for a dwell of at least a threshold share of its longest \

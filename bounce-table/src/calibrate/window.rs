@@ -13,7 +13,7 @@ pub struct Window {
     /// event, with the uncertainty of a fit to this many events (`None` when no part has a
     /// spread to fit).
     pub predictive: Option<f64>,
-    /// Bouncing events behind the fit.
+    /// Bouncing events behind the fit (timed ones: see [`super::fit::bounces`]).
     pub bouncing: usize,
 }
 
@@ -55,7 +55,7 @@ pub fn window(d: &[&capture::Description], percentile: f64) -> Window {
     Window {
         observed: d.iter().map(|x| x.bounce).fold(0.0, f64::max),
         predictive: model.predictive.as_ref().map(|p| p.quantile(percentile)),
-        bouncing: d.iter().filter(|x| x.bounce > 0.0).count(),
+        bouncing: d.iter().filter(|x| super::fit::bounces(x)).count(),
     }
 }
 
