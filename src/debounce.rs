@@ -141,6 +141,20 @@ impl State {
         self.0 & CLOSED != 0
     }
 
+    /// The state as 16 bits, to keep it where a Rust type cannot go (a C struct, backup RAM).
+    #[must_use]
+    pub const fn to_bits(self) -> u16 {
+        self.0
+    }
+
+    /// The state from [`State::to_bits`]. Every `u16` is a valid state: the top bit is the
+    /// debounced level and the rest a counter that `update` only counts down or resets, so
+    /// bits not made by `to_bits` cannot make it fail, only start mid-window.
+    #[must_use]
+    pub const fn from_bits(bits: u16) -> Self {
+        Self(bits)
+    }
+
     /// Feeds one sample (`true`: the contact reads closed); returns the edge it debounces, if
     /// any. A handful of integer operations; no failure.
     pub fn update(&mut self, closed: bool, windows: &Windows) -> Option<Edge> {

@@ -1,0 +1,341 @@
+/*
+ * contact-bounce: predict a switch's bounce from physics, turn it into a debounce window, and
+ * debounce each pin. Link libcontact_bounce_c.a built for your target (see the README).
+ */
+
+#ifndef CONTACT_BOUNCE_H
+#define CONTACT_BOUNCE_H
+
+/* Generated from contact-bounce-c/src/lib.rs: do not edit. */
+
+#include <stdbool.h>
+#include <stdint.h>
+
+// `cb_prediction.flags`: the end time is finite.
+#define CB_HAS_END 1
+
+// `cb_prediction.flags`: the last impact above the threshold is at a finite time.
+#define CB_HAS_LAST_ABOVE 2
+
+// `cb_prediction.flags`: the count of impacts above the threshold is finite.
+#define CB_HAS_COUNT 4
+
+// `cb_prediction.flags`: the expected relative error is known (the scene is within the
+// tier's stated validity).
+#define CB_HAS_EXPECTED_ERROR 8
+
+// The longest window in samples.
+#define CB_MAX_WINDOW_TICKS 32767
+
+// What a sample debounced to.
+enum cb_edge
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : uint8_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+  // No change.
+  CB_EDGE_NONE = 0,
+  // The contact closed.
+  CB_EDGE_PRESS,
+  // The contact opened.
+  CB_EDGE_RELEASE,
+  // An argument was NULL or the windows were not made by `cb_windows_init`: the pin is
+  // unchanged.
+  CB_EDGE_ERROR,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum cb_edge cb_edge;
+#else
+typedef uint8_t cb_edge;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+// Why (`CB_OK` when there is no error).
+enum cb_code
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : uint8_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+  // No error.
+  CB_OK = 0,
+  // A pointer argument was NULL.
+  CB_ERR_NULL,
+  // NaN.
+  CB_ERR_NAN,
+  // Infinite.
+  CB_ERR_INFINITE,
+  // Must be > 0.
+  CB_ERR_NOT_POSITIVE,
+  // Must be >= 0.
+  CB_ERR_NEGATIVE,
+  // Outside its allowed interval.
+  CB_ERR_OUT_OF_RANGE,
+  // The regime never ends by itself: give a threshold.
+  CB_ERR_THRESHOLD_REQUIRED,
+  // Valid alone, but it overflows (or loses all precision) with the other parameters.
+  CB_ERR_OVERFLOW,
+  // The threshold is at or above the first impulse: no impact would count.
+  CB_ERR_ABOVE_FIRST_IMPULSE,
+  // The bounce never ends, so no finite window exists.
+  CB_ERR_ENDLESS,
+  // A reason this header does not know (a newer core).
+  CB_ERR_OTHER,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum cb_code cb_code;
+#else
+typedef uint8_t cb_code;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+// Which parameter an error names (`CB_PARAM_NONE` when there is no error).
+enum cb_parameter
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : uint8_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+  // No parameter: no error.
+  CB_PARAM_NONE = 0,
+  // A pointer argument was NULL.
+  CB_PARAM_POINTER,
+  // `mass`.
+  CB_PARAM_MASS,
+  // `stiffness`.
+  CB_PARAM_STIFFNESS,
+  // `offset`.
+  CB_PARAM_OFFSET,
+  // `restitution`.
+  CB_PARAM_RESTITUTION,
+  // `damping_ratio`.
+  CB_PARAM_DAMPING_RATIO,
+  // `closing_speed`.
+  CB_PARAM_CLOSING_SPEED,
+  // `threshold_fraction`.
+  CB_PARAM_THRESHOLD,
+  // The tolerance asked of `cb_predict_auto`.
+  CB_PARAM_TOLERANCE,
+  // A window's margin factor.
+  CB_PARAM_MARGIN_FACTOR,
+  // A window's extra time.
+  CB_PARAM_MARGIN_EXTRA,
+  // The sample (tick) period.
+  CB_PARAM_SAMPLE_PERIOD,
+  // A time: the bounce a window must cover, or a window in ticks.
+  CB_PARAM_TIME,
+  // The debouncer's mode.
+  CB_PARAM_MODE,
+  // A parameter this header does not know (a newer core).
+  CB_PARAM_OTHER,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum cb_parameter cb_parameter;
+#else
+typedef uint8_t cb_parameter;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+// How the bounce behaves over time.
+enum cb_regime
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : uint8_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+  // Infinitely many impacts in a finite time, then the contact stays closed.
+  CB_REGIME_ZENO = 0,
+  // Finitely many impacts; the last one ends the bounce.
+  CB_REGIME_LAST_IMPACT,
+  // Impacts decay but never end: the threshold ends the bounce.
+  CB_REGIME_ENDLESS,
+  // No dissipation: constant impacts forever.
+  CB_REGIME_PERIODIC,
+  // The contact separates once and never returns.
+  CB_REGIME_SINGLE_IMPACT,
+  // A regime this header does not know (a newer core).
+  CB_REGIME_OTHER,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum cb_regime cb_regime;
+#else
+typedef uint8_t cb_regime;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+// Which tier answered.
+enum cb_tier
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : uint8_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+  // The regime alone answered.
+  CB_TIER_REGIME = 0,
+  // A closed form.
+  CB_TIER_CLOSED,
+  // The averaged model.
+  CB_TIER_AVERAGED,
+  // The semi-discrete map.
+  CB_TIER_MAP,
+  // The exact solution.
+  CB_TIER_EXACT,
+  // A tier this header does not know (a newer core).
+  CB_TIER_OTHER,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum cb_tier cb_tier;
+#else
+typedef uint8_t cb_tier;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+// How a debounce window is used.
+enum cb_mode
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : uint8_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+  // Report a change after the new level has held for the window.
+  CB_MODE_CONFIRM = 0,
+  // Report a change at once, then ignore the pin for the window.
+  CB_MODE_HOLD_OFF,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum cb_mode cb_mode;
+#else
+typedef uint8_t cb_mode;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+// An error: which parameter, and why. `code == CB_OK` means success.
+//
+// Every field a C caller can hand back is a plain integer (the enums are its named values),
+// so no bit pattern from C is invalid on the Rust side.
+typedef struct cb_error {
+  // Why: a `cb_code`.
+  uint8_t code;
+  // Which parameter: a `cb_parameter`.
+  uint8_t parameter;
+} cb_error;
+
+// A switch in SI units: one moving contact (effective mass on a spring), its stop, the impact
+// law, viscous damping and how fast it closes.
+typedef struct cb_switch {
+  // Effective (moving) mass, kg (> 0).
+  float mass;
+  // Effective stiffness of the contact spring, N/m (> 0).
+  float stiffness;
+  // Where the stop is from the spring's free rest position, m: a gap > 0, a preload < 0
+  // (preload force / stiffness), grazing 0.
+  float offset;
+  // Coefficient of restitution R, in (0, 1].
+  float restitution;
+  // Viscous damping ratio zeta (>= 0; 0 for none).
+  float damping_ratio;
+  // Closing speed at the first impact, m/s (> 0).
+  float closing_speed;
+  // The impacts that count: those whose impulse is above this fraction of the first, in
+  // (0, 1); 0 for no threshold (then a regime that never ends by itself is an error).
+  float threshold_fraction;
+} cb_switch;
+
+// A prediction. A field whose flag is not set is 0 and means nothing.
+typedef struct cb_prediction {
+  // When the bounce ends, s after the first impact (`CB_HAS_END`).
+  float end_time;
+  // When the last impact above the threshold happens, s (`CB_HAS_LAST_ABOVE`).
+  float last_above_time;
+  // How many impacts are above the threshold (`CB_HAS_COUNT`; a real number for the
+  // averaged tier).
+  float impacts_above;
+  // The relative error to expect of the bounce time (`CB_HAS_EXPECTED_ERROR`).
+  float expected_error;
+  // The regime: a `cb_regime`.
+  uint8_t regime;
+  // The tier that answered: a `cb_tier`.
+  uint8_t tier;
+  // `CB_HAS_*` bits.
+  uint8_t flags;
+} cb_prediction;
+
+// Press and release windows in samples, shared by every pin of one kind of switch. Fill it
+// with `cb_windows_init`.
+typedef struct cb_windows {
+  // Press window, samples (at most `CB_MAX_WINDOW_TICKS`).
+  uint16_t press;
+  // Release window, samples (at most `CB_MAX_WINDOW_TICKS`).
+  uint16_t release;
+  // How the windows are used: a `cb_mode`.
+  uint8_t mode;
+} cb_windows;
+
+// One pin's debouncer state: 2 bytes. Set it with `cb_pin_init`.
+typedef struct cb_pin {
+  // The state; not to be read or written by the caller.
+  uint16_t state;
+} cb_pin;
+
+#ifdef __cplusplus
+extern "C" {
+#endif // __cplusplus
+
+// The name of a `cb_parameter` as `cb_switch` and the functions spell it (a static,
+// NUL-terminated string); "unknown" for a value that is no `cb_parameter`.
+const char *cb_parameter_name(uint8_t parameter);
+
+// Validates a switch: `CB_OK`, or the first invalid parameter and why.
+struct cb_error cb_switch_check(const struct cb_switch *sw);
+
+// The closed forms: the cheapest tier (exact sums without damping, `t_b1v` / `t_b2r` with it).
+struct cb_error cb_predict_closed(const struct cb_switch *sw, struct cb_prediction *out);
+
+// The averaged model J' = E1(J), 8 Gauss-Legendre nodes per panel.
+struct cb_error cb_predict_averaged(const struct cb_switch *sw, struct cb_prediction *out);
+
+// The semi-discrete map, impact by impact (the averaged model beyond its default cap).
+struct cb_error cb_predict_map(const struct cb_switch *sw, struct cb_prediction *out);
+
+// The exact solution, flight by flight: expected error at the float's rounding.
+struct cb_error cb_predict_exact(const struct cb_switch *sw, struct cb_prediction *out);
+
+// The cheapest tier whose expected error is within `tolerance` (relative, e.g. 0.01); every
+// tier is linked. Check `expected_error` against the tolerance: where nothing meets it the
+// smallest expected error answers.
+struct cb_error cb_predict_auto(const struct cb_switch *sw,
+                                float tolerance,
+                                struct cb_prediction *out);
+
+// The debounce window covering a prediction's bounce (its end, else its last impact above the
+// threshold) in ticks of `sample_period` seconds: `ceil((margin_factor * bounce +
+// margin_extra) / sample_period)`, at least 1 for a positive bounce. `margin_factor` >= 1,
+// `margin_extra` >= 0 s.
+struct cb_error cb_window_ticks(const struct cb_prediction *prediction,
+                                float margin_factor,
+                                float margin_extra,
+                                float sample_period,
+                                uint32_t *ticks);
+
+// Fills `out` with windows of `press` and `release` samples (each at most
+// `CB_MAX_WINDOW_TICKS`, else `CB_PARAM_TIME` out of range).
+struct cb_error cb_windows_init(struct cb_windows *out,
+                                uint32_t press,
+                                uint32_t release,
+                                uint8_t mode);
+
+// A pin settled closed (`closed` true) or open.
+struct cb_error cb_pin_init(struct cb_pin *pin, bool closed);
+
+// Feeds one sample (`closed`: the contact reads closed) and returns the edge it debounces.
+cb_edge cb_pin_update(struct cb_pin *pin, bool closed, const struct cb_windows *windows);
+
+// Whether the pin is debounced closed.
+bool cb_pin_is_closed(const struct cb_pin *pin);
+
+#ifdef __cplusplus
+}  // extern "C"
+#endif  // __cplusplus
+
+#endif  /* CONTACT_BOUNCE_H */
