@@ -97,6 +97,9 @@ rm -rf "$app"
 step "firmware on the Arduino Uno (simavr) prints the host's lines"
 scripts/uno.sh
 
+step "the C API from C: host checks and lines, C++ header, the Uno in simavr"
+scripts/c-api.sh
+
 step "cost report runs and its Cortex-M rows are current (instructions under QEMU, flash per firmware and per tier)"
 costs=$(scripts/cost-report.sh)
 # (The Uno's rows depend on the nightly of the day, installed fresh on CI: not compared.)

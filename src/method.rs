@@ -92,7 +92,12 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
     /// assert!((map / averaged - 1.0).abs() < 0.05 && (closed / averaged - 1.0).abs() < 0.3);
     /// # Ok::<(), contact_bounce::Error>(())
     /// ```
+    ///
+    /// Always inlined: where the method is a constant (firmware that names its tier, the C API's
+    /// one function per tier) only that tier is linked, whichever other calls the firmware has.
     #[must_use]
+    #[allow(clippy::inline_always)] // a dispatch on the method, small beside any tier
+    #[inline(always)]
     pub fn predict(&self, method: Method<F>) -> Prediction<F> {
         match method {
             Method::Closed => closed::predict(self),

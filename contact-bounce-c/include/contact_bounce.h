@@ -126,6 +126,8 @@ enum cb_parameter
   CB_PARAM_TIME,
   // The debouncer's mode.
   CB_PARAM_MODE,
+  // The preload force of `cb_preload_bounce_time`.
+  CB_PARAM_PRELOAD_FORCE,
   // A parameter this header does not know (a newer core).
   CB_PARAM_OTHER,
 };
@@ -210,16 +212,14 @@ typedef uint8_t cb_mode;
 #endif // __STDC_VERSION__ >= 202311L
 #endif // __cplusplus
 
-// An error: which parameter, and why. `code == CB_OK` means success.
+// An error: which parameter, and why, in 16 bits: the `cb_code` in the low byte, the
+// `cb_parameter` in the high byte (`CB_ERROR_CODE(e)`, `CB_ERROR_PARAMETER(e)`). 0 (`CB_OK`)
+// means success.
 //
-// Every field a C caller can hand back is a plain integer (the enums are its named values),
-// so no bit pattern from C is invalid on the Rust side.
-typedef struct cb_error {
-  // Why: a `cb_code`.
-  uint8_t code;
-  // Which parameter: a `cb_parameter`.
-  uint8_t parameter;
-} cb_error;
+// An integer, not a struct: a small struct returned by value is where compilers for the
+// small targets (avr-gcc and rustc on the ATmega328P) disagree on the ABI, and any 16 bits
+// from C are a valid `cb_error` on the Rust side.
+typedef uint16_t cb_error;
 
 // A switch in SI units: one moving contact (effective mass on a spring), its stop, the impact
 // law, viscous damping and how fast it closes.
@@ -261,6 +261,16 @@ typedef struct cb_prediction {
   uint8_t flags;
 } cb_prediction;
 
+// A closed-form estimate: the time and the relative error to expect of it.
+typedef struct cb_estimate {
+  // The bounce time, s.
+  float time;
+  // The relative error to expect (`has_expected_error`), else 0.
+  float expected_error;
+  // Whether the inputs are within the formula's stated validity (1) or not (0).
+  uint8_t has_expected_error;
+} cb_estimate;
+
 // Press and release windows in samples, shared by every pin of one kind of switch. Fill it
 // with `cb_windows_init`.
 typedef struct cb_windows {
@@ -287,46 +297,61 @@ extern "C" {
 const char *cb_parameter_name(uint8_t parameter);
 
 // Validates a switch: `CB_OK`, or the first invalid parameter and why.
-struct cb_error cb_switch_check(const struct cb_switch *sw);
+cb_error cb_switch_check(const struct cb_switch *sw);
 
 // The closed forms: the cheapest tier (exact sums without damping, `t_b1v` / `t_b2r` with it).
-struct cb_error cb_predict_closed(const struct cb_switch *sw, struct cb_prediction *out);
+cb_error cb_predict_closed(const struct cb_switch *sw, struct cb_prediction *out);
 
 // The averaged model J' = E1(J), 8 Gauss-Legendre nodes per panel.
-struct cb_error cb_predict_averaged(const struct cb_switch *sw, struct cb_prediction *out);
+cb_error cb_predict_averaged(const struct cb_switch *sw, struct cb_prediction *out);
 
 // The semi-discrete map, impact by impact (the averaged model beyond its default cap).
-struct cb_error cb_predict_map(const struct cb_switch *sw, struct cb_prediction *out);
+cb_error cb_predict_map(const struct cb_switch *sw, struct cb_prediction *out);
 
 // The exact solution, flight by flight: expected error at the float's rounding.
-struct cb_error cb_predict_exact(const struct cb_switch *sw, struct cb_prediction *out);
+cb_error cb_predict_exact(const struct cb_switch *sw, struct cb_prediction *out);
 
 // The cheapest tier whose expected error is within `tolerance` (relative, e.g. 0.01); every
 // tier is linked. Check `expected_error` against the tolerance: where nothing meets it the
 // smallest expected error answers.
-struct cb_error cb_predict_auto(const struct cb_switch *sw,
-                                float tolerance,
-                                struct cb_prediction *out);
+cb_error cb_predict_auto(const struct cb_switch *sw, float tolerance, struct cb_prediction *out);
 
 // The debounce window covering a prediction's bounce (its end, else its last impact above the
 // threshold) in ticks of `sample_period` seconds: `ceil((margin_factor * bounce +
 // margin_extra) / sample_period)`, at least 1 for a positive bounce. `margin_factor` >= 1,
 // `margin_extra` >= 0 s.
-struct cb_error cb_window_ticks(const struct cb_prediction *prediction,
-                                float margin_factor,
-                                float margin_extra,
-                                float sample_period,
-                                uint32_t *ticks);
+cb_error cb_window_ticks(const struct cb_prediction *prediction,
+                         float margin_factor,
+                         float margin_extra,
+                         float sample_period,
+                         uint32_t *ticks);
+
+// The window covering `seconds` of bounce, as `cb_window_ticks` (for `cb_preload_bounce_time`).
+cb_error cb_seconds_to_ticks(float seconds,
+                             float margin_factor,
+                             float margin_extra,
+                             float sample_period,
+                             uint32_t *ticks);
+
+// The lean path: a preloaded contact's bounce time `t_b1v` (restitution and viscous damping;
+// `damping_ratio` 0 gives `t_b1`) straight from its inputs, with no scene and no tier: the
+// smallest firmware (it fits the Uno where the tiers through this API do not). Expected error
+// within 2.5 % plus the arctangent linearisation for a small first impulse; the estimate says
+// when the inputs are beyond that. `preload_force` in N (> 0).
+cb_error cb_preload_bounce_time(float mass,
+                                float stiffness,
+                                float preload_force,
+                                float restitution,
+                                float damping_ratio,
+                                float closing_speed,
+                                struct cb_estimate *out);
 
 // Fills `out` with windows of `press` and `release` samples (each at most
 // `CB_MAX_WINDOW_TICKS`, else `CB_PARAM_TIME` out of range).
-struct cb_error cb_windows_init(struct cb_windows *out,
-                                uint32_t press,
-                                uint32_t release,
-                                uint8_t mode);
+cb_error cb_windows_init(struct cb_windows *out, uint32_t press, uint32_t release, uint8_t mode);
 
 // A pin settled closed (`closed` true) or open.
-struct cb_error cb_pin_init(struct cb_pin *pin, bool closed);
+cb_error cb_pin_init(struct cb_pin *pin, bool closed);
 
 // Feeds one sample (`closed`: the contact reads closed) and returns the edge it debounces.
 cb_edge cb_pin_update(struct cb_pin *pin, bool closed, const struct cb_windows *windows);
@@ -339,3 +364,7 @@ bool cb_pin_is_closed(const struct cb_pin *pin);
 #endif  // __cplusplus
 
 #endif  /* CONTACT_BOUNCE_H */
+
+/* The parts of a cb_error. */
+#define CB_ERROR_CODE(e) ((uint8_t)((e) & 0xFFu))
+#define CB_ERROR_PARAMETER(e) ((uint8_t)((e) >> 8))

@@ -23,9 +23,9 @@
 #![allow(non_camel_case_types)]
 
 use contact_bounce::{
-    Contact, Edge, Error, Frequency, Margin, Method, Mode, Nodes, Offset, Parameter, Prediction,
-    Reason, Regime, Restitution, Scene, State, Threshold, Tier, Time, Tolerance, Viscous, Window,
-    Windows, DEFAULT_MAX_IMPACTS, EXACT_MAX_IMPACTS,
+    preload_viscous_bounce_time, Contact, Edge, Error, Frequency, Margin, Method, Mode, Nodes,
+    Offset, Parameter, Prediction, Reason, Regime, Restitution, Scene, State, Threshold, Tier,
+    Time, Tolerance, Viscous, Window, Windows, DEFAULT_MAX_IMPACTS, EXACT_MAX_IMPACTS,
 };
 
 /// A panic cannot happen (the core and this crate have no panicking path); on a bare-metal
@@ -93,6 +93,8 @@ pub enum cb_parameter {
     CB_PARAM_TIME,
     /// The debouncer's mode.
     CB_PARAM_MODE,
+    /// The preload force of `cb_preload_bounce_time`.
+    CB_PARAM_PRELOAD_FORCE,
     /// A parameter this header does not know (a newer core).
     CB_PARAM_OTHER,
 }
@@ -127,25 +129,32 @@ pub enum cb_code {
     CB_ERR_OTHER,
 }
 
-/// An error: which parameter, and why. `code == CB_OK` means success.
+/// An error: which parameter, and why, in 16 bits: the `cb_code` in the low byte, the
+/// `cb_parameter` in the high byte (`CB_ERROR_CODE(e)`, `CB_ERROR_PARAMETER(e)`). 0 (`CB_OK`)
+/// means success.
 ///
-/// Every field a C caller can hand back is a plain integer (the enums are its named values),
-/// so no bit pattern from C is invalid on the Rust side.
-#[repr(C)]
+/// An integer, not a struct: a small struct returned by value is where compilers for the
+/// small targets (avr-gcc and rustc on the ATmega328P) disagree on the ABI, and any 16 bits
+/// from C are a valid `cb_error` on the Rust side.
+#[repr(transparent)]
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct cb_error {
-    /// Why: a `cb_code`.
-    pub code: u8,
-    /// Which parameter: a `cb_parameter`.
-    pub parameter: u8,
-}
+pub struct cb_error(pub u16);
 
 impl cb_error {
     const fn new(code: cb_code, parameter: cb_parameter) -> Self {
-        Self {
-            code: code as u8,
-            parameter: parameter as u8,
-        }
+        Self(((parameter as u16) << 8) | code as u16)
+    }
+
+    /// The `cb_code`.
+    #[must_use]
+    pub const fn code(self) -> u8 {
+        self.0.to_le_bytes()[0]
+    }
+
+    /// The `cb_parameter`.
+    #[must_use]
+    pub const fn parameter(self) -> u8 {
+        self.0.to_le_bytes()[1]
     }
 }
 
@@ -172,6 +181,7 @@ impl From<Error> for cb_error {
             Parameter::MarginExtra => cb_parameter::CB_PARAM_MARGIN_EXTRA,
             Parameter::SamplePeriod => cb_parameter::CB_PARAM_SAMPLE_PERIOD,
             Parameter::Time => cb_parameter::CB_PARAM_TIME,
+            Parameter::PreloadForce => cb_parameter::CB_PARAM_PRELOAD_FORCE,
             _ => cb_parameter::CB_PARAM_OTHER,
         };
         let code = match e.reason() {
@@ -191,7 +201,7 @@ impl From<Error> for cb_error {
 }
 
 /// Every `cb_parameter`, in the order of its values.
-const PARAMETERS: [(cb_parameter, &core::ffi::CStr); 16] = [
+const PARAMETERS: [(cb_parameter, &core::ffi::CStr); 17] = [
     (cb_parameter::CB_PARAM_NONE, c"none"),
     (cb_parameter::CB_PARAM_POINTER, c"pointer"),
     (cb_parameter::CB_PARAM_MASS, c"mass"),
@@ -207,6 +217,7 @@ const PARAMETERS: [(cb_parameter, &core::ffi::CStr); 16] = [
     (cb_parameter::CB_PARAM_SAMPLE_PERIOD, c"sample_period"),
     (cb_parameter::CB_PARAM_TIME, c"time"),
     (cb_parameter::CB_PARAM_MODE, c"mode"),
+    (cb_parameter::CB_PARAM_PRELOAD_FORCE, c"preload_force"),
     (cb_parameter::CB_PARAM_OTHER, c"other"),
 ];
 
@@ -440,6 +451,28 @@ pub extern "C" fn cb_predict_auto(
     predict(sw, out, || Ok(Method::Auto(Tolerance::new(tolerance)?)))
 }
 
+/// Writes `ceil((margin_factor * seconds + margin_extra) / sample_period)` to `ticks`.
+fn ticks_for(
+    seconds: Option<f32>,
+    margin_factor: f32,
+    margin_extra: f32,
+    sample_period: f32,
+    ticks: &mut u32,
+) -> cb_error {
+    let window = seconds
+        .ok_or(Error::new(Parameter::Time, Reason::Endless))
+        .and_then(|s| {
+            Window::from_seconds(s, &Margin::new(margin_factor, margin_extra)?, sample_period)
+        });
+    match window {
+        Ok(w) => {
+            *ticks = w.ticks();
+            OK
+        }
+        Err(e) => e.into(),
+    }
+}
+
 /// The debounce window covering a prediction's bounce (its end, else its last impact above the
 /// threshold) in ticks of `sample_period` seconds: `ceil((margin_factor * bounce +
 /// margin_extra) / sample_period)`, at least 1 for a positive bounce. `margin_factor` >= 1,
@@ -463,15 +496,82 @@ pub extern "C" fn cb_window_ticks(
     } else {
         Time::Never
     };
-    let window = bounce
-        .seconds()
-        .ok_or(Error::new(Parameter::Time, Reason::Endless))
-        .and_then(|s| {
-            Window::from_seconds(s, &Margin::new(margin_factor, margin_extra)?, sample_period)
-        });
-    match window {
-        Ok(w) => {
-            *ticks = w.ticks();
+    ticks_for(
+        bounce.seconds(),
+        margin_factor,
+        margin_extra,
+        sample_period,
+        ticks,
+    )
+}
+
+/// The window covering `seconds` of bounce, as `cb_window_ticks` (for `cb_preload_bounce_time`).
+#[allow(unsafe_code)]
+#[no_mangle]
+pub extern "C" fn cb_seconds_to_ticks(
+    seconds: f32,
+    margin_factor: f32,
+    margin_extra: f32,
+    sample_period: f32,
+    ticks: Option<&mut u32>,
+) -> cb_error {
+    match ticks {
+        Some(ticks) => ticks_for(
+            Some(seconds),
+            margin_factor,
+            margin_extra,
+            sample_period,
+            ticks,
+        ),
+        None => NULL,
+    }
+}
+
+/// A closed-form estimate: the time and the relative error to expect of it.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct cb_estimate {
+    /// The bounce time, s.
+    pub time: f32,
+    /// The relative error to expect (`has_expected_error`), else 0.
+    pub expected_error: f32,
+    /// Whether the inputs are within the formula's stated validity (1) or not (0).
+    pub has_expected_error: u8,
+}
+
+/// The lean path: a preloaded contact's bounce time `t_b1v` (restitution and viscous damping;
+/// `damping_ratio` 0 gives `t_b1`) straight from its inputs, with no scene and no tier: the
+/// smallest firmware (it fits the Uno where the tiers through this API do not). Expected error
+/// within 2.5 % plus the arctangent linearisation for a small first impulse; the estimate says
+/// when the inputs are beyond that. `preload_force` in N (> 0).
+#[allow(unsafe_code)]
+#[no_mangle]
+pub extern "C" fn cb_preload_bounce_time(
+    mass: f32,
+    stiffness: f32,
+    preload_force: f32,
+    restitution: f32,
+    damping_ratio: f32,
+    closing_speed: f32,
+    out: Option<&mut cb_estimate>,
+) -> cb_error {
+    let Some(out) = out else {
+        return NULL;
+    };
+    match preload_viscous_bounce_time(
+        mass,
+        stiffness,
+        preload_force,
+        closing_speed,
+        restitution,
+        damping_ratio,
+    ) {
+        Ok(e) => {
+            *out = cb_estimate {
+                time: e.time,
+                expected_error: e.expected_error.unwrap_or(0.0),
+                has_expected_error: u8::from(e.expected_error.is_some()),
+            };
             OK
         }
         Err(e) => e.into(),

@@ -1,0 +1,119 @@
+/* The C API from C, on the host: prints the lines of every tier and of the debouncer (compared
+ * with the Rust core's by scripts/c-api.sh), and checks that bad inputs return error codes.
+ * Exit status 1 on a failed check. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "lines.h"
+
+static int failures = 0;
+
+static void put(const char *line) { puts(line); }
+
+static void expect(cb_error e, uint8_t code, uint8_t parameter, const char *what) {
+    if (CB_ERROR_CODE(e) != code || CB_ERROR_PARAMETER(e) != parameter) {
+        fprintf(stderr, "FAIL %s: code %u parameter %s, expected code %u parameter %s\n", what,
+                CB_ERROR_CODE(e), cb_parameter_name(CB_ERROR_PARAMETER(e)), code, cb_parameter_name(parameter));
+        failures++;
+    }
+}
+
+static void bad_inputs(void) {
+    const cb_switch dome = SWITCHES[0];
+    cb_prediction p;
+    cb_switch s;
+    uint32_t ticks = 0;
+
+    expect(cb_switch_check(&dome), CB_OK, CB_PARAM_NONE, "the dome is valid");
+    expect(cb_switch_check(NULL), CB_ERR_NULL, CB_PARAM_POINTER, "NULL switch");
+    expect(cb_predict_closed(NULL, &p), CB_ERR_NULL, CB_PARAM_POINTER, "NULL switch, closed");
+    expect(cb_predict_map(&dome, NULL), CB_ERR_NULL, CB_PARAM_POINTER, "NULL prediction");
+
+    s = dome;
+    s.mass = NAN;
+    expect(cb_predict_exact(&s, &p), CB_ERR_NAN, CB_PARAM_MASS, "NaN mass");
+    s = dome;
+    s.stiffness = -1.0f;
+    expect(cb_predict_closed(&s, &p), CB_ERR_NOT_POSITIVE, CB_PARAM_STIFFNESS, "negative stiffness");
+    s = dome;
+    s.offset = INFINITY;
+    expect(cb_predict_averaged(&s, &p), CB_ERR_INFINITE, CB_PARAM_OFFSET, "infinite offset");
+    s = dome;
+    s.restitution = 1.5f;
+    expect(cb_predict_map(&s, &p), CB_ERR_OUT_OF_RANGE, CB_PARAM_RESTITUTION, "R above 1");
+    s = dome;
+    s.damping_ratio = -0.1f;
+    expect(cb_switch_check(&s), CB_ERR_NEGATIVE, CB_PARAM_DAMPING_RATIO, "negative zeta");
+    s = dome;
+    s.closing_speed = 0.0f;
+    expect(cb_switch_check(&s), CB_ERR_NOT_POSITIVE, CB_PARAM_CLOSING_SPEED, "zero closing speed");
+    s = dome;
+    s.threshold_fraction = 1.0f;
+    expect(cb_switch_check(&s), CB_ERR_OUT_OF_RANGE, CB_PARAM_THRESHOLD, "threshold of 1");
+    /* Elastic impacts on a damped preload decay forever and never end: a threshold is needed. */
+    s = dome;
+    s.restitution = 1.0f;
+    expect(cb_switch_check(&s), CB_ERR_THRESHOLD_REQUIRED, CB_PARAM_THRESHOLD, "endless, no threshold");
+    expect(cb_predict_auto(&dome, NAN, &p), CB_ERR_NAN, CB_PARAM_TOLERANCE, "NaN tolerance");
+    expect(cb_predict_auto(&dome, 0.0f, &p), CB_ERR_NOT_POSITIVE, CB_PARAM_TOLERANCE, "zero tolerance");
+
+    expect(cb_predict_closed(&dome, &p), CB_OK, CB_PARAM_NONE, "the dome predicts");
+    expect(cb_window_ticks(NULL, 1.5f, 0.0f, 1e-5f, &ticks), CB_ERR_NULL, CB_PARAM_POINTER, "NULL prediction, window");
+    expect(cb_window_ticks(&p, 1.5f, 0.0f, 1e-5f, NULL), CB_ERR_NULL, CB_PARAM_POINTER, "NULL ticks");
+    expect(cb_window_ticks(&p, 0.5f, 0.0f, 1e-5f, &ticks), CB_ERR_OUT_OF_RANGE, CB_PARAM_MARGIN_FACTOR, "factor below 1");
+    expect(cb_window_ticks(&p, 1.5f, NAN, 1e-5f, &ticks), CB_ERR_NAN, CB_PARAM_MARGIN_EXTRA, "NaN extra");
+    expect(cb_window_ticks(&p, 1.5f, 0.0f, 0.0f, &ticks), CB_ERR_NOT_POSITIVE, CB_PARAM_SAMPLE_PERIOD, "zero period");
+    expect(cb_window_ticks(&p, 1.5f, 0.0f, 1e-30f, &ticks), CB_ERR_OVERFLOW, CB_PARAM_SAMPLE_PERIOD, "window beyond u32");
+    /* A prediction with no end and no last impact (flags cleared by the caller). */
+    p.flags = 0;
+    expect(cb_window_ticks(&p, 1.5f, 0.0f, 1e-5f, &ticks), CB_ERR_ENDLESS, CB_PARAM_TIME, "endless window");
+
+    cb_estimate est;
+    expect(cb_preload_bounce_time(5e-5f, 5000.0f, 1.0f, 0.7f, 0.03f, 0.5f, NULL), CB_ERR_NULL, CB_PARAM_POINTER, "NULL estimate");
+    expect(cb_preload_bounce_time(5e-5f, 5000.0f, -1.0f, 0.7f, 0.03f, 0.5f, &est), CB_ERR_NOT_POSITIVE, CB_PARAM_PRELOAD_FORCE, "negative preload force");
+    expect(cb_preload_bounce_time(5e-5f, 5000.0f, 1.0f, NAN, 0.03f, 0.5f, &est), CB_ERR_NAN, CB_PARAM_RESTITUTION, "NaN R, lean path");
+    expect(cb_seconds_to_ticks(-1.0f, 1.5f, 0.0f, 1e-5f, &ticks), CB_ERR_NEGATIVE, CB_PARAM_TIME, "negative seconds");
+    expect(cb_seconds_to_ticks(1e-3f, 1.5f, 0.0f, 1e-5f, NULL), CB_ERR_NULL, CB_PARAM_POINTER, "NULL ticks, seconds");
+
+    cb_windows w;
+    cb_pin pin;
+    expect(cb_windows_init(NULL, 3, 3, CB_MODE_CONFIRM), CB_ERR_NULL, CB_PARAM_POINTER, "NULL windows");
+    expect(cb_windows_init(&w, 40000, 3, CB_MODE_CONFIRM), CB_ERR_OUT_OF_RANGE, CB_PARAM_TIME, "window too long");
+    expect(cb_windows_init(&w, 3, 3, 7), CB_ERR_OUT_OF_RANGE, CB_PARAM_MODE, "unknown mode");
+    expect(cb_pin_init(NULL, false), CB_ERR_NULL, CB_PARAM_POINTER, "NULL pin");
+    expect(cb_windows_init(&w, 3, 3, CB_MODE_HOLD_OFF), CB_OK, CB_PARAM_NONE, "windows");
+    expect(cb_pin_init(&pin, false), CB_OK, CB_PARAM_NONE, "pin");
+    if (cb_pin_update(NULL, true, &w) != CB_EDGE_ERROR || cb_pin_update(&pin, true, NULL) != CB_EDGE_ERROR) {
+        fprintf(stderr, "FAIL NULL to cb_pin_update is not CB_EDGE_ERROR\n");
+        failures++;
+    }
+    w.mode = 9; /* written by hand, not by cb_windows_init */
+    if (cb_pin_update(&pin, true, &w) != CB_EDGE_ERROR || cb_pin_is_closed(&pin)) {
+        fprintf(stderr, "FAIL bad windows to cb_pin_update\n");
+        failures++;
+    }
+    if (strcmp(cb_parameter_name(200), "unknown") != 0 || strcmp(cb_parameter_name(CB_PARAM_MASS), "mass") != 0) {
+        fprintf(stderr, "FAIL cb_parameter_name\n");
+        failures++;
+    }
+}
+
+int main(void) {
+    for (uint32_t i = 0; i < SWITCH_COUNT; i++) {
+        cb_prediction p;
+        tb1v_line(put, i);
+        prediction_line(put, i, "closed", cb_predict_closed(&SWITCHES[i], &p), &p);
+        prediction_line(put, i, "averaged", cb_predict_averaged(&SWITCHES[i], &p), &p);
+        prediction_line(put, i, "map", cb_predict_map(&SWITCHES[i], &p), &p);
+        prediction_line(put, i, "exact", cb_predict_exact(&SWITCHES[i], &p), &p);
+        prediction_line(put, i, "auto", cb_predict_auto(&SWITCHES[i], 0.01f, &p), &p);
+    }
+    debouncer_lines(put);
+    bad_inputs();
+    if (failures != 0) {
+        fprintf(stderr, "%d checks failed\n", failures);
+        return 1;
+    }
+    return 0;
+}

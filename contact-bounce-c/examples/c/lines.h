@@ -1,0 +1,94 @@
+/* The lines both C examples print, through a `put` function of the platform's. */
+#ifndef LINES_H
+#define LINES_H
+
+#include "switches.h"
+
+typedef void (*put_line)(const char *line);
+
+/* Writes an unsigned decimal into buf; returns the end. */
+static char *put_u32(char *buf, uint32_t v) {
+    char digits[10];
+    int n = 0;
+    do {
+        digits[n++] = (char)('0' + v % 10u);
+        v /= 10u;
+    } while (v != 0u);
+    while (n > 0) {
+        *buf++ = digits[--n];
+    }
+    return buf;
+}
+
+static char *put_str(char *buf, const char *s) {
+    while (*s != '\0') {
+        *buf++ = *s++;
+    }
+    return buf;
+}
+
+/* One prediction as a line: "switch S TIER end_ns N ticks K" (or the error). */
+static void prediction_line(put_line put, uint32_t index, const char *tier, cb_error e,
+                            const cb_prediction *p) {
+    char line[96];
+    char *at = put_str(line, "switch ");
+    at = put_u32(at, index);
+    at = put_str(at, " ");
+    at = put_str(at, tier);
+    if (e != CB_OK) {
+        at = put_str(at, " error ");
+        at = put_str(at, cb_parameter_name(CB_ERROR_PARAMETER(e)));
+        at = put_str(at, " ");
+        at = put_u32(at, CB_ERROR_CODE(e));
+    } else {
+        uint32_t ticks = 0;
+        cb_error w = cb_window_ticks(p, 1.5f, 0.0f, 1e-5f, &ticks);
+        at = put_str(at, " end_ns ");
+        at = put_u32(at, (p->flags & CB_HAS_END) ? (uint32_t)(p->end_time * 1e9f) : 0u);
+        at = put_str(at, " ticks ");
+        at = put_u32(at, w == CB_OK ? ticks : 0u);
+    }
+    *at = '\0';
+    put(line);
+}
+
+/* The lean path on a switch, its preload force -offset * stiffness: "switch S tb1v end_ns N
+ * ticks K" (or the error: a gap has no preload force). */
+static void tb1v_line(put_line put, uint32_t index) {
+    const cb_switch *s = &SWITCHES[index];
+    cb_estimate e;
+    cb_error r = cb_preload_bounce_time(s->mass, s->stiffness, -s->offset * s->stiffness,
+                                        s->restitution, s->damping_ratio, s->closing_speed, &e);
+    cb_prediction p = {0};
+    if (r == CB_OK) {
+        p.end_time = e.time;
+        p.flags = CB_HAS_END;
+    }
+    prediction_line(put, index, "tb1v", r, &p);
+}
+
+/* The debouncer over SAMPLES with 3-sample windows, in both modes: "pin MODE i EDGE". */
+static void debouncer_lines(put_line put) {
+    for (uint8_t mode = CB_MODE_CONFIRM; mode <= CB_MODE_HOLD_OFF; mode++) {
+        cb_windows windows;
+        cb_pin pin;
+        if (cb_windows_init(&windows, 3, 3, mode) != CB_OK ||
+            cb_pin_init(&pin, false) != CB_OK) {
+            put("pin init failed");
+            return;
+        }
+        for (uint32_t i = 0; i < SAMPLE_COUNT; i++) {
+            cb_edge edge = cb_pin_update(&pin, SAMPLES[i] != 0u, &windows);
+            if (edge != CB_EDGE_NONE) {
+                char line[48];
+                char *at = put_str(line, mode == CB_MODE_CONFIRM ? "pin confirm " : "pin hold-off ");
+                at = put_u32(at, i);
+                at = put_str(at, edge == CB_EDGE_PRESS ? " press" : edge == CB_EDGE_RELEASE ? " release" : " error");
+                *at = '\0';
+                put(line);
+            }
+        }
+    }
+}
+
+#endif

@@ -1,0 +1,42 @@
+/* The C API on an Arduino Uno (ATmega328P), in C: the lean path (t_b1v from a preload's
+ * inputs) for the switches of switches.h and the debouncer, printed over the UART. (A tier
+ * through this API does not fit: the closed tier alone overflows the 32 KB by about 4 KB.) scripts/c-api.sh builds it with avr-gcc
+ * against libcontact_bounce_c.a, runs it in simavr and compares its lines with the Rust core's
+ * (examples/lines.rs) on the host. */
+#include <avr/io.h>
+#include <avr/sleep.h>
+
+#include "lines.h"
+
+static void uart_init(void) {
+    UBRR0H = 0; /* 9600 baud at 16 MHz */
+    UBRR0L = 103;
+    UCSR0C = (1 << UCSZ01) | (1 << UCSZ00);
+    UCSR0B = (1 << TXEN0);
+}
+
+static void uart_put(const char *line) {
+    for (; *line != '\0'; line++) {
+        while ((UCSR0A & (1 << UDRE0)) == 0) {
+        }
+        UDR0 = (uint8_t)*line;
+    }
+    while ((UCSR0A & (1 << UDRE0)) == 0) {
+    }
+    UDR0 = '\n';
+}
+
+int main(void) {
+    uart_init();
+    for (uint32_t i = 0; i < SWITCH_COUNT; i++) {
+        tb1v_line(uart_put, i);
+    }
+    debouncer_lines(uart_put);
+    uart_put("done");
+    /* Interrupts off and sleep: simavr ends the run. */
+    __asm__ volatile("cli");
+    sleep_enable();
+    sleep_cpu();
+    for (;;) {
+    }
+}

@@ -1,0 +1,102 @@
+//! The lines the C examples print (`examples/c/lines.h`), computed by the Rust core directly:
+//! `scripts/c-api.sh` checks that the C API gives the same on the host and on the Uno.
+//! The switches and samples are those of `examples/c/switches.h`.
+
+use contact_bounce::{
+    preload_viscous_bounce_time, Contact, Edge, Error, Frequency, Margin, Method, Mode, Nodes,
+    Offset, Prediction, Restitution, Scene, State, Threshold, Tolerance, Viscous, Window, Windows,
+    DEFAULT_MAX_IMPACTS, EXACT_MAX_IMPACTS,
+};
+
+/// mass, stiffness, offset, R, zeta, closing speed, threshold fraction (0: none).
+const SWITCHES: [[f32; 7]; 3] = [
+    [5e-5, 5000.0, -2e-4, 0.7, 0.03, 0.5, 0.0],
+    [1e-3, 100.0, 1e-4, 0.8, 0.05, 0.3, 0.01],
+    [2e-6, 400.0, -5e-5, 0.6, 0.0, 0.2, 0.0],
+];
+
+const SAMPLES: [u8; 20] = [0, 1, 0, 1, 1, 0, 1, 1, 1, 1, 1, 1, 0, 1, 0, 0, 0, 0, 0, 0];
+
+fn scene(s: [f32; 7]) -> Result<Scene<f32, Viscous<f32>>, Error> {
+    let [mass, stiffness, offset, r, zeta, v0, fraction] = s;
+    Scene::new(
+        Contact {
+            frequency: Frequency::MassStiffness { mass, stiffness },
+            offset: Offset::Delta(offset),
+            restitution: Restitution::Coefficient(r),
+            closing_speed: v0,
+            threshold: if fraction == 0.0 {
+                Threshold::None
+            } else {
+                Threshold::FractionOfFirst(fraction)
+            },
+        },
+        Viscous::new(zeta)?,
+    )
+}
+
+/// The C API's `cb_code` of an error's reason.
+fn code(e: Error) -> u8 {
+    contact_bounce_c::cb_error::from(e).code()
+}
+
+fn line(index: usize, tier: &str, p: &Prediction<f32>) -> String {
+    #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+    let end_ns = p.end_time.seconds().map_or(0, |t| (t * 1e9_f32) as u32);
+    let ticks = Margin::new(1.5_f32, 0.0)
+        .and_then(|m| Window::from_prediction(p, &m, 1e-5))
+        .map_or(0, |w| w.ticks());
+    format!("switch {index} {tier} end_ns {end_ns} ticks {ticks}")
+}
+
+fn main() -> Result<(), Error> {
+    for (i, s) in SWITCHES.into_iter().enumerate() {
+        let [mass, stiffness, offset, r, zeta, v0, _] = s;
+        match preload_viscous_bounce_time(mass, stiffness, -offset * stiffness, v0, r, zeta) {
+            Ok(e) => {
+                #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+                let end_ns = (e.time * 1e9_f32) as u32;
+                let ticks = Margin::new(1.5_f32, 0.0)
+                    .and_then(|m| Window::from_seconds(e.time, &m, 1e-5))
+                    .map_or(0, |w| w.ticks());
+                println!("switch {i} tb1v end_ns {end_ns} ticks {ticks}");
+            }
+            // The C API numbers the parameter and the reason; the names are the same.
+            Err(e) => println!("switch {i} tb1v error {} {}", e.parameter(), code(e)),
+        }
+        let scene = scene(s)?;
+        for (tier, method) in [
+            ("closed", Method::Closed),
+            ("averaged", Method::Averaged(Nodes::N8)),
+            (
+                "map",
+                Method::Map {
+                    max_impacts: DEFAULT_MAX_IMPACTS,
+                },
+            ),
+            (
+                "exact",
+                Method::Exact {
+                    max_impacts: EXACT_MAX_IMPACTS,
+                },
+            ),
+            ("auto", Method::Auto(Tolerance::new(0.01)?)),
+        ] {
+            println!("{}", line(i, tier, &scene.predict(method)));
+        }
+    }
+    for (mode, name) in [(Mode::Confirm, "confirm"), (Mode::HoldOff, "hold-off")] {
+        let windows = Windows::new(3, 3, mode)?;
+        let mut state = State::new(false);
+        for (i, &s) in SAMPLES.iter().enumerate() {
+            if let Some(edge) = state.update(s != 0, &windows) {
+                let edge = match edge {
+                    Edge::Press => "press",
+                    Edge::Release => "release",
+                };
+                println!("pin {name} {i} {edge}");
+            }
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# The C API (contact-bounce-c) from C:
+#  - on the host: examples/c/api_test.c, compiled with -Werror against the static library,
+#    checks that bad inputs (NULL, NaN, out of range) return their error codes and prints the
+#    lines of every tier and of the debouncer, which must be those the Rust core prints
+#    (examples/lines.rs); the header also compiles as C++;
+#  - on the Arduino Uno: examples/c/uno.c, built with avr-gcc against the library built for
+#    avr-none (nightly), runs in simavr and must print the host's lean-path and debouncer lines.
+# The header itself is checked current by `cargo test -p contact-bounce-c`.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+C=contact-bounce-c
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+cargo build --quiet --release -p contact-bounce-c
+cc -std=c99 -Wall -Wextra -Werror -pedantic -I"$C/include" -I"$C/examples/c" \
+  "$C/examples/c/api_test.c" target/release/libcontact_bounce_c.a -lm -lpthread -ldl -o "$tmp/api_test"
+"$tmp/api_test" > "$tmp/c"
+cargo run --quiet --release -p contact-bounce-c --example lines > "$tmp/rust"
+if ! diff -u "$tmp/rust" "$tmp/c"; then
+  echo "FAIL: the C API printed other lines than the Rust core" >&2
+  exit 1
+fi
+echo "ok: the C API on the host ($(wc -l < "$tmp/c") lines, as the Rust core; bad inputs give their codes)"
+printf '#include "contact_bounce.h"\nint main() { cb_pin p; return cb_pin_init(&p, false) == CB_OK ? 0 : 1; }\n' > "$tmp/cpp.cpp"
+c++ -std=c++11 -Wall -Werror -I"$C/include" "$tmp/cpp.cpp" target/release/libcontact_bounce_c.a -lpthread -ldl -o "$tmp/cpp"
+"$tmp/cpp"
+echo "ok: the header compiles and links as C++"
+
+if ! rustup toolchain list | grep -q '^nightly'; then
+  if ! rustup toolchain install nightly --profile minimal >/dev/null 2>&1; then
+    echo "SKIPPED: the C API on the Uno needs a nightly toolchain, and none is installed or installable here" >&2
+    exit 0
+  fi
+fi
+rustup component add rust-src --toolchain nightly >/dev/null
+if ! command -v simavr >/dev/null || ! command -v avr-gcc >/dev/null; then
+  apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends gcc-avr avr-libc simavr >/dev/null
+fi
+cargo +nightly build --quiet --release -p contact-bounce-c --target avr-none -Zbuild-std=core
+# As .cargo/config.toml does for Rust firmware: avr-libc's single-precision routines, marked
+# undefined before -lm, are taken instead of the library's generic ones.
+avr-gcc -mmcu=atmega328p -Os -std=gnu99 -Wall -Wextra -Werror -ffunction-sections -fdata-sections \
+  -I"$C/include" -I"$C/examples/c" "$C/examples/c/uno.c" -Wl,--gc-sections \
+  -Wl,-u,__addsf3,-u,__subsf3,-u,__mulsf3,-u,__divsf3,-u,__eqsf2,-u,__nesf2,-u,__ltsf2,-u,__lesf2,-u,__gtsf2,-u,__gesf2,-u,__unordsf2 \
+  -lm target/avr-none/release/libcontact_bounce_c.a -lm -o "$tmp/uno.elf"
+avr-size "$tmp/uno.elf"
+timeout 300 simavr -m atmega328p -f 16000000 "$tmp/uno.elf" > "$tmp/raw" 2>&1 || true
+sed -e 's/\x1b\[[0-9;]*m//g' "$tmp/raw" | grep -v -e '^Loaded ' -e '^$' | sed -e 's/\.$//' > "$tmp/uno"
+{ grep -E ' tb1v |^pin ' "$tmp/rust"; echo done; } > "$tmp/want"
+if ! diff -u "$tmp/want" "$tmp/uno"; then
+  echo "FAIL: the C API on the Uno printed other lines than the host" >&2
+  exit 1
+fi
+echo "ok: the C API on the Uno in simavr ($(wc -l < "$tmp/want") lines, as on the host)"
