@@ -4,6 +4,9 @@
 #    checks that bad inputs (NULL, NaN, out of range) return their error codes and prints the
 #    lines of every tier and of the debouncer, which must be those the Rust core prints
 #    (examples/lines.rs); the header also compiles as C++;
+#  - on a Cortex-M4F under QEMU: examples/c/cortex_m.c (no C library), built with
+#    arm-none-eabi-gcc against the library built for thumbv7em-none-eabihf, prints every tier's
+#    and the debouncer's lines, which must be the host's;
 #  - on the Arduino Uno: examples/c/uno.c, built with avr-gcc against the library built for
 #    avr-none (nightly), runs in simavr and must print the host's lean-path and debouncer lines.
 # The header itself is checked current by `cargo test -p contact-bounce-c`.
@@ -28,6 +31,26 @@ c++ -std=c++11 -Wall -Werror -I"$C/include" "$tmp/cpp.cpp" target/release/libcon
 "$tmp/cpp"
 echo "ok: the header compiles and links as C++"
 
+# Cortex-M4F under QEMU, C with no C library (arm-none-eabi-gcc from Debian's packages).
+if ! command -v arm-none-eabi-gcc >/dev/null || ! command -v qemu-system-arm >/dev/null; then
+  apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends gcc-arm-none-eabi qemu-system-arm >/dev/null
+fi
+rustup target add thumbv7em-none-eabihf >/dev/null 2>&1
+cargo build --quiet --release -p contact-bounce-c --target thumbv7em-none-eabihf
+arm-none-eabi-gcc -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16 -Os -std=gnu99 \
+  -Wall -Wextra -Werror -ffreestanding -ffunction-sections -fdata-sections -nostdlib -Wa,--noexecstack \
+  -I"$C/include" -I"$C/examples/c" "$C/examples/c/cortex_m.c" -T "$C/examples/c/cortex_m.ld" \
+  -Wl,--gc-sections target/thumbv7em-none-eabihf/release/libcontact_bounce_c.a -o "$tmp/cortex_m.elf"
+arm-none-eabi-size "$tmp/cortex_m.elf"
+timeout 300 qemu-system-arm -cpu cortex-m4 -machine mps2-an386 -nographic \
+  -semihosting-config enable=on,target=native -kernel "$tmp/cortex_m.elf" > "$tmp/cortex_m"
+if ! diff -u "$tmp/rust" "$tmp/cortex_m"; then
+  echo "FAIL: the C API on the Cortex-M4F printed other lines than the Rust core on the host" >&2
+  exit 1
+fi
+echo "ok: the C API on the Cortex-M4F under QEMU ($(wc -l < "$tmp/cortex_m") lines, as on the host)"
+
 if ! rustup toolchain list | grep -q '^nightly'; then
   if ! rustup toolchain install nightly --profile minimal >/dev/null 2>&1; then
     echo "SKIPPED: the C API on the Uno needs a nightly toolchain, and none is installed or installable here" >&2
@@ -42,11 +65,18 @@ fi
 cargo +nightly build --quiet --release -p contact-bounce-c --target avr-none -Zbuild-std=core
 # As .cargo/config.toml does for Rust firmware: avr-libc's single-precision routines, marked
 # undefined before -lm, are taken instead of the library's generic ones.
-avr-gcc -mmcu=atmega328p -Os -std=gnu99 -Wall -Wextra -Werror -ffunction-sections -fdata-sections \
-  -I"$C/include" -I"$C/examples/c" "$C/examples/c/uno.c" -Wl,--gc-sections \
-  -Wl,-u,__addsf3,-u,__subsf3,-u,__mulsf3,-u,__divsf3,-u,__eqsf2,-u,__nesf2,-u,__ltsf2,-u,__lesf2,-u,__gtsf2,-u,__gesf2,-u,__unordsf2 \
-  -lm target/avr-none/release/libcontact_bounce_c.a -lm -o "$tmp/uno.elf"
+uno() {
+  avr-gcc -mmcu=atmega328p -Os -std=gnu99 -Wall -Wextra -Werror -ffunction-sections -fdata-sections \
+    -I"$C/include" -I"$C/examples/c" "$C/examples/c/uno.c" -Wl,--gc-sections \
+    -Wl,-u,__addsf3,-u,__subsf3,-u,__mulsf3,-u,__divsf3,-u,__eqsf2,-u,__nesf2,-u,__ltsf2,-u,__lesf2,-u,__gtsf2,-u,__gesf2,-u,__unordsf2 \
+    -lm target/avr-none/release/libcontact_bounce_c.a -lm "$@"
+}
+uno -o "$tmp/uno.elf"
 avr-size "$tmp/uno.elf"
+# The closed tier as well: linked past the flash's end only to measure it.
+uno -DWITH_CLOSED_TIER -Wl,--noinhibit-exec -o "$tmp/closed.elf" 2>/dev/null || true
+read -r text data _ < <(avr-size "$tmp/closed.elf" | tail -1)
+echo "the closed tier through the C API on the Uno: $((text + data)) bytes of flash needed (text $text + data $data) of 32768"
 timeout 300 simavr -m atmega328p -f 16000000 "$tmp/uno.elf" > "$tmp/raw" 2>&1 || true
 sed -e 's/\x1b\[[0-9;]*m//g' "$tmp/raw" | grep -v -e '^Loaded ' -e '^$' | sed -e 's/\.$//' > "$tmp/uno"
 { grep -E ' tb1v |^pin ' "$tmp/rust"; echo done; } > "$tmp/want"
