@@ -328,7 +328,10 @@ fn a_bounce_shorter_than_the_resolution_is_fitted_with_the_clean_edges() {
     // The same fit as to the timed bursts alone (up to the rounding of t + b - t at t <= 39 s).
     let (got, want) = (m.burst.unwrap(), LogNormal::fit(&timed).unwrap());
     assert_eq!(got.n, 16);
-    assert!((got.mu - want.mu).abs() < 1e-9 && (got.sigma - want.sigma).abs() < 1e-9, "{m:?}");
+    assert!(
+        (got.mu - want.mu).abs() < 1e-9 && (got.sigma - want.sigma).abs() < 1e-9,
+        "{m:?}"
+    );
     let w = window(&d, 0.99);
     assert_eq!(w.bouncing, 16);
     let largest = timed.iter().copied().fold(0.0, f64::max);
