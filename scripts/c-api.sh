@@ -85,3 +85,6 @@ if ! diff -u "$tmp/want" "$tmp/uno"; then
   exit 1
 fi
 echo "ok: the C API on the Uno in simavr ($(wc -l < "$tmp/want") lines, as on the host)"
+
+# The Arduino library layout, and its example sketch compiled as the Arduino build does.
+scripts/arduino-library.sh "$tmp/arduino/ContactBounce"
