@@ -382,7 +382,9 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
     /// threshold fraction outside (0, 1) or an impulse not positive or at or above the first
     /// impulse; a preload force without a stiffness; an [`Regime::Endless`] regime with no
     /// threshold ([`Reason::Required`]); combinations that overflow ([`Reason::Overflow`]),
-    /// among them a first impulse 2 R v0 below [`Scene::impulse_floor`] (the closing speed).
+    /// among them Omega (1 + R) v0 above the float's largest value over 2^17 (the acceleration
+    /// scale no tier can follow) and a first impulse 2 R v0 below [`Scene::impulse_floor`]
+    /// (both named the closing speed).
     pub fn new(contact: Contact<F>, dissipation: D) -> Result<Self, Error> {
         Self::build(contact, dissipation, None)
     }
@@ -405,6 +407,13 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
             F::TWO * restitution * closing_speed,
             Parameter::ClosingSpeed,
         )?;
+        // The impulse's acceleration scale Omega J, times the largest factor a tier puts on it
+        // (the map's viscous loss over a flight, zeta (2 theta)^2 Omega J times a period: with
+        // zeta <= 1e3, below 2^17): beyond it no flight is one the float can follow (f32, a
+        // mass of 1e-30 kg closing at 1e30 m/s: the map's loss overflowed and its time was NaN).
+        if !(omega * first_impulse * F::from_f64(131_072.0)).is_finite() {
+            return Err(Error::new(Parameter::ClosingSpeed, Reason::Overflow));
+        }
         let threshold = contact.threshold.validate(first_impulse, restitution)?;
         if delta != F::ZERO {
             // Every scale the model forms from Omega and Delta must be finite and non-zero.

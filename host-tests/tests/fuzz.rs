@@ -570,3 +570,41 @@ fn the_raw_bits_harness_findings_stay_fixed() {
     assert_eq!(checked, 20);
     assert!(faults.is_empty(), "{faults:?}");
 }
+
+#[test]
+fn an_acceleration_scale_beyond_the_float_is_refused() {
+    // Found through the C API's harness: f32, a mass of 1e-30 kg on 651 N/m (Omega 2.6e16
+    // rad/s), grazing, closing at 1e30 m/s. Omega J = 5e46 overflows f32: the map's viscous loss
+    // over a flight was -inf and its last-above time NaN. Refused, naming the closing speed; the
+    // same switch at 1e15 m/s (Omega J = 5e31), and at 1e30 m/s in f64, are predicted soundly.
+    fn scene<F: Float>(v0: f64) -> Result<Scene<F, Viscous<F>>, contact_bounce::Error> {
+        Scene::new(
+            Contact {
+                frequency: Frequency::MassStiffness {
+                    mass: F::from_f64(1e-30),
+                    stiffness: F::from_f64(651.270_94),
+                },
+                offset: Offset::Delta(F::ZERO),
+                restitution: Restitution::Coefficient(F::ONE),
+                closing_speed: F::from_f64(v0),
+                threshold: Threshold::FractionOfFirst(F::from_f64(1e-6)),
+            },
+            Viscous::new(F::from_f64(0.009_702_306))?,
+        )
+    }
+    let refused = scene::<f32>(1e30).map(|_| ());
+    assert_eq!(
+        refused,
+        Err(contact_bounce::Error::new(
+            contact_bounce::Parameter::ClosingSpeed,
+            contact_bounce::Reason::Overflow
+        ))
+    );
+    let (mut checked, mut faults) = (0, Vec::new());
+    let slower = scene::<f32>(1e15).expect("accepted");
+    check_scene(&slower, "f32 at 1e15 m/s", &mut checked, &mut faults);
+    let wide = scene::<f64>(1e30).expect("accepted");
+    check_scene(&wide, "f64 at 1e30 m/s", &mut checked, &mut faults);
+    assert!(checked > 0);
+    assert!(faults.is_empty(), "{faults:?}");
+}

@@ -1,0 +1,253 @@
+//! The C API under the seeded random harness (as `host-tests/tests/fuzz.rs` does for the
+//! core): raw f32 bit patterns and edge values into every function, called as C calls them
+//! (NULL as `None`, any integer where C passes one). Each call must return `CB_OK` with sound
+//! numbers, or an error whose code and parameter are values of `cb_code` and `cb_parameter`;
+//! the debouncer takes any state and any windows without failing. `FUZZ_SCENES` inputs (CI:
+//! 10,000; `scripts/fuzz.sh`: millions).
+
+use contact_bounce_c::{
+    cb_code, cb_error, cb_estimate, cb_parameter, cb_parameter_name, cb_pin, cb_pin_init,
+    cb_pin_is_closed, cb_pin_update, cb_predict_auto, cb_predict_averaged, cb_predict_closed,
+    cb_predict_exact, cb_predict_map, cb_prediction, cb_preload_bounce_time, cb_seconds_to_ticks,
+    cb_switch, cb_switch_check, cb_window_ticks, cb_windows, cb_windows_init, CB_HAS_COUNT,
+    CB_HAS_END, CB_HAS_EXPECTED_ERROR, CB_HAS_LAST_ABOVE,
+};
+
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        self.0
+    }
+    /// Raw bits a quarter of the time, a plausible magnitude (1e-6..1e6, now and then
+    /// negative) a quarter, else an edge value.
+    fn value(&mut self) -> f32 {
+        const EDGES: [f32; 12] = [
+            0.0,
+            -0.0,
+            f32::NAN,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            1e-30,
+            1e30,
+            1.0,
+            0.5,
+            -1.0,
+            1e-45,
+            0.999_999_9,
+        ];
+        let pick = self.next();
+        match pick % 4 {
+            0 => f32::from_bits((self.next() >> 32) as u32),
+            1 => {
+                let u = (self.next() >> 40) as f32 / (1u64 << 24) as f32;
+                let x = 10f32.powf(-6.0 + 12.0 * u);
+                if pick % 32 == 1 {
+                    -x
+                } else {
+                    x
+                }
+            }
+            _ => EDGES[((pick >> 8) % EDGES.len() as u64) as usize],
+        }
+    }
+}
+
+fn scenes() -> usize {
+    std::env::var("FUZZ_SCENES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(10_000)
+}
+
+/// What is wrong with an answer, if anything.
+fn fault(e: cb_error, p: &cb_prediction) -> Option<&'static str> {
+    if e.code() > cb_code::CB_ERR_OTHER as u8 || e.parameter() > cb_parameter::CB_PARAM_OTHER as u8
+    {
+        return Some("an error outside cb_code / cb_parameter");
+    }
+    if (e.code() == 0) != (e.parameter() == 0) {
+        return Some("a code without a parameter, or a parameter without a code");
+    }
+    if e.code() != 0 {
+        return None;
+    }
+    let sound = |x: f32| x.is_finite() && x >= 0.0;
+    let fields = [
+        (CB_HAS_END, p.end_time),
+        (CB_HAS_LAST_ABOVE, p.last_above_time),
+        (CB_HAS_COUNT, p.impacts_above),
+        (CB_HAS_EXPECTED_ERROR, p.expected_error),
+    ];
+    if fields
+        .iter()
+        .any(|&(flag, x)| p.flags & flag != 0 && !sound(x))
+    {
+        return Some("NaN, infinite or negative number flagged valid");
+    }
+    if fields
+        .iter()
+        .any(|&(flag, x)| p.flags & flag == 0 && x != 0.0)
+    {
+        return Some("a number whose flag is not set is not 0");
+    }
+    if p.flags & (CB_HAS_END | CB_HAS_LAST_ABOVE) == CB_HAS_END | CB_HAS_LAST_ABOVE
+        && p.last_above_time > p.end_time
+    {
+        return Some("last impact above the threshold after the end");
+    }
+    None
+}
+
+#[test]
+fn raw_inputs_to_the_c_api_get_error_codes_or_sound_answers() {
+    let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+    let (mut accepted, mut faults) = (0usize, Vec::new());
+    for _ in 0..scenes() {
+        let sw = cb_switch {
+            mass: rng.value(),
+            stiffness: rng.value(),
+            offset: rng.value(),
+            restitution: rng.value(),
+            damping_ratio: rng.value(),
+            closing_speed: rng.value(),
+            threshold_fraction: rng.value(),
+        };
+        let check = cb_switch_check(Some(&sw));
+        let mut p = cb_prediction {
+            end_time: 0.0,
+            last_above_time: 0.0,
+            impacts_above: 0.0,
+            expected_error: 0.0,
+            regime: 0,
+            tier: 0,
+            flags: 0,
+        };
+        let tolerance = rng.value();
+        let answers = [
+            ("closed", cb_predict_closed(Some(&sw), Some(&mut p)), p),
+            ("averaged", cb_predict_averaged(Some(&sw), Some(&mut p)), p),
+            ("map", cb_predict_map(Some(&sw), Some(&mut p)), p),
+            ("exact", cb_predict_exact(Some(&sw), Some(&mut p)), p),
+            (
+                "auto",
+                cb_predict_auto(Some(&sw), tolerance, Some(&mut p)),
+                p,
+            ),
+        ];
+        for (tier, e, p) in answers {
+            if let Some(f) = fault(e, &p) {
+                faults.push(format!("{tier}: {f}: {sw:?} -> {e:?} {p:?}"));
+            }
+            // A tier refuses exactly the switches cb_switch_check refuses (auto: also a bad
+            // tolerance).
+            if tier != "auto" && (e.code() == 0) != (check.code() == 0) {
+                faults.push(format!("{tier} and cb_switch_check disagree: {sw:?}"));
+            }
+            if e.code() == 0 {
+                accepted += 1;
+                let mut ticks = 0;
+                let w = cb_window_ticks(
+                    Some(&p),
+                    rng.value(),
+                    rng.value(),
+                    rng.value(),
+                    Some(&mut ticks),
+                );
+                if let Some(f) = fault(w, &p) {
+                    faults.push(format!("window: {f}"));
+                }
+            }
+        }
+        let mut est = cb_estimate {
+            time: 0.0,
+            expected_error: 0.0,
+            has_expected_error: 0,
+        };
+        let e = cb_preload_bounce_time(
+            sw.mass,
+            sw.stiffness,
+            rng.value(),
+            sw.restitution,
+            sw.damping_ratio,
+            sw.closing_speed,
+            Some(&mut est),
+        );
+        if e.code() == 0
+            && !(est.time.is_finite() && est.time >= 0.0 && est.expected_error.is_finite())
+        {
+            faults.push(format!("tb1v: unsound estimate {est:?} for {sw:?}"));
+        }
+        let mut ticks = 0;
+        let e = cb_seconds_to_ticks(
+            rng.value(),
+            rng.value(),
+            rng.value(),
+            rng.value(),
+            Some(&mut ticks),
+        );
+        if fault(e, &p).is_some() {
+            faults.push(format!("seconds to ticks: {e:?}"));
+        }
+    }
+    eprintln!(
+        "C API: {accepted} predictions accepted and checked, {} faults",
+        faults.len()
+    );
+    for f in faults.iter().take(10) {
+        eprintln!("  {f}");
+    }
+    assert!(
+        accepted > 0,
+        "nothing accepted: the harness tests nothing past validation"
+    );
+    assert!(
+        faults.is_empty(),
+        "{} faults, first: {}",
+        faults.len(),
+        faults[0]
+    );
+}
+
+#[test]
+fn the_debouncer_takes_any_state_windows_and_mode() {
+    let mut rng = Rng(0xD1B5_4A32_D192_ED03);
+    for _ in 0..scenes() * 10 {
+        let bits = rng.next();
+        let mut w = cb_windows {
+            press: (bits & 0xFFFF) as u16,
+            release: ((bits >> 16) & 0xFFFF) as u16,
+            mode: ((bits >> 32) & 0xFF) as u8,
+        };
+        let mut pin = cb_pin {
+            state: ((bits >> 40) & 0xFFFF) as u16,
+        };
+        let before = pin;
+        let edge = cb_pin_update(Some(&mut pin), bits >> 63 == 1, Some(&w)) as u8;
+        assert!(edge <= 3, "{edge}");
+        // Windows that cb_windows_init refuses give CB_EDGE_ERROR and leave the pin alone.
+        let given = w;
+        let init = cb_windows_init(
+            Some(&mut w),
+            u32::from(given.press),
+            u32::from(given.release),
+            given.mode,
+        );
+        if init.code() != 0 {
+            assert_eq!(edge, 3, "{w:?}");
+            assert_eq!(pin, before);
+        } else {
+            assert!(edge < 3, "{w:?}");
+        }
+        let _ = cb_pin_is_closed(Some(&pin));
+    }
+    assert_eq!(cb_pin_init(None, true).code(), cb_code::CB_ERR_NULL as u8);
+    // Every u8 has a name.
+    for p in 0..=u8::MAX {
+        let name = cb_parameter_name(p);
+        assert!(!name.is_null());
+    }
+}
