@@ -42,6 +42,7 @@ cargo clippy -p contact-bounce --all-features --target thumbv7em-none-eabihf -- 
 
 step "rustdoc -D warnings"
 RUSTDOCFLAGS="-D warnings" cargo doc --quiet --no-deps -p contact-bounce --all-features
+RUSTDOCFLAGS="-D warnings" cargo doc --quiet --no-deps -p contact-bounce-c
 
 step "no_std builds for every target and feature set"
 for target in "${targets[@]}"; do
