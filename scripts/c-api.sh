@@ -51,17 +51,9 @@ if ! diff -u "$tmp/rust" "$tmp/cortex_m"; then
 fi
 echo "ok: the C API on the Cortex-M4F under QEMU ($(wc -l < "$tmp/cortex_m") lines, as on the host)"
 
-if ! rustup toolchain list | grep -q '^nightly'; then
-  if ! rustup toolchain install nightly --profile minimal >/dev/null 2>&1; then
-    echo "SKIPPED: the C API on the Uno needs a nightly toolchain, and none is installed or installable here" >&2
-    exit 0
-  fi
-fi
-rustup component add rust-src --toolchain nightly >/dev/null
-if ! command -v simavr >/dev/null || ! command -v avr-gcc >/dev/null; then
-  apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends gcc-avr avr-libc simavr >/dev/null
-fi
+# shellcheck source=scripts/avr-toolchain.sh
+source scripts/avr-toolchain.sh
+avr_toolchain "the C API on the Uno"
 cargo +nightly build --quiet --release -p contact-bounce-c --target avr-none -Zbuild-std=core
 # As .cargo/config.toml does for Rust firmware: avr-libc's single-precision routines, marked
 # undefined before -lm, are taken instead of the library's generic ones.

@@ -6,17 +6,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-if ! rustup toolchain list | grep -q '^nightly'; then
-  if ! rustup toolchain install nightly --profile minimal >/dev/null 2>&1; then
-    echo "SKIPPED: the Uno check needs a nightly toolchain, and none is installed or installable here" >&2
-    exit 0
-  fi
-fi
-rustup component add rust-src --toolchain nightly >/dev/null
-if ! command -v simavr >/dev/null || ! command -v avr-gcc >/dev/null; then
-  apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends gcc-avr avr-libc simavr >/dev/null
-fi
+# shellcheck source=scripts/avr-toolchain.sh
+source scripts/avr-toolchain.sh
+avr_toolchain "the Uno check"
 
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT

@@ -32,13 +32,7 @@ static void put(const char *line) {
 
 int main(void) {
     for (uint32_t i = 0; i < SWITCH_COUNT; i++) {
-        cb_prediction p;
-        tb1v_line(put, i);
-        prediction_line(put, i, "closed", cb_predict_closed(&SWITCHES[i], &p), &p);
-        prediction_line(put, i, "averaged", cb_predict_averaged(&SWITCHES[i], &p), &p);
-        prediction_line(put, i, "map", cb_predict_map(&SWITCHES[i], &p), &p);
-        prediction_line(put, i, "exact", cb_predict_exact(&SWITCHES[i], &p), &p);
-        prediction_line(put, i, "auto", cb_predict_auto(&SWITCHES[i], 0.01f, &p), &p);
+        switch_lines(put, i);
     }
     debouncer_lines(put);
     return 0;

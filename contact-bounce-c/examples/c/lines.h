@@ -1,4 +1,5 @@
-/* The lines both C examples print, through a `put` function of the platform's. */
+/* The lines the C examples print, through a `put` function of the platform's (a firmware that
+ * calls only some of these functions links only those: the Uno's calls the lean path). */
 #ifndef LINES_H
 #define LINES_H
 
@@ -7,7 +8,7 @@
 typedef void (*put_line)(const char *line);
 
 /* Writes an unsigned decimal into buf; returns the end. */
-static char *put_u32(char *buf, uint32_t v) {
+static inline char *put_u32(char *buf, uint32_t v) {
     char digits[10];
     int n = 0;
     do {
@@ -20,7 +21,7 @@ static char *put_u32(char *buf, uint32_t v) {
     return buf;
 }
 
-static char *put_str(char *buf, const char *s) {
+static inline char *put_str(char *buf, const char *s) {
     while (*s != '\0') {
         *buf++ = *s++;
     }
@@ -28,7 +29,7 @@ static char *put_str(char *buf, const char *s) {
 }
 
 /* One prediction as a line: "switch S TIER end_ns N ticks K" (or the error). */
-static void prediction_line(put_line put, uint32_t index, const char *tier, cb_error e,
+static inline void prediction_line(put_line put, uint32_t index, const char *tier, cb_error e,
                             const cb_prediction *p) {
     char line[96];
     char *at = put_str(line, "switch ");
@@ -54,7 +55,7 @@ static void prediction_line(put_line put, uint32_t index, const char *tier, cb_e
 
 /* The lean path on a switch, its preload force -offset * stiffness: "switch S tb1v end_ns N
  * ticks K" (or the error: a gap has no preload force). */
-static void tb1v_line(put_line put, uint32_t index) {
+static inline void tb1v_line(put_line put, uint32_t index) {
     const cb_switch *s = &SWITCHES[index];
     cb_estimate e;
     cb_error r = cb_preload_bounce_time(s->mass, s->stiffness, -s->offset * s->stiffness,
@@ -67,8 +68,19 @@ static void tb1v_line(put_line put, uint32_t index) {
     prediction_line(put, index, "tb1v", r, &p);
 }
 
+/* Every tier and the lean path on one switch of SWITCHES. */
+static inline void switch_lines(put_line put, uint32_t i) {
+    cb_prediction p;
+    tb1v_line(put, i);
+    prediction_line(put, i, "closed", cb_predict_closed(&SWITCHES[i], &p), &p);
+    prediction_line(put, i, "averaged", cb_predict_averaged(&SWITCHES[i], &p), &p);
+    prediction_line(put, i, "map", cb_predict_map(&SWITCHES[i], &p), &p);
+    prediction_line(put, i, "exact", cb_predict_exact(&SWITCHES[i], &p), &p);
+    prediction_line(put, i, "auto", cb_predict_auto(&SWITCHES[i], 0.01f, &p), &p);
+}
+
 /* The debouncer over SAMPLES with 3-sample windows, in both modes: "pin MODE i EDGE". */
-static void debouncer_lines(put_line put) {
+static inline void debouncer_lines(put_line put) {
     for (uint8_t mode = CB_MODE_CONFIRM; mode <= CB_MODE_HOLD_OFF; mode++) {
         cb_windows windows;
         cb_pin pin;
