@@ -56,6 +56,18 @@ pub(crate) fn log_growth<F: Float>(s: F, k: F) -> F {
     }
 }
 
+/// [`log_growth`] of s = `num / den` (both > 0), still finite where that ratio overflows
+/// (ln s = ln num - ln den): f32, j0 / r with r = 4e-10 and v0 = 1e30 overflowed, and t_b1v
+/// became `Never` where it is 3.3 s.
+pub(crate) fn log_growth_of_ratio<F: Float>(num: F, den: F, k: F) -> F {
+    let s = num / den;
+    if s.is_finite() || k <= F::ZERO {
+        log_growth(s, k)
+    } else {
+        (k.ln() + num.ln() - den.ln()) / k
+    }
+}
+
 /// t_b1v straight from a preloaded contact's datasheet-like inputs, with no [`Scene`]: the lean
 /// path for firmware that needs a window and nothing else (it links the checks, two square
 /// roots and one `ln_1p`; [`Scene::t_b1v`] gives the same value from a scene).
@@ -120,7 +132,7 @@ pub fn preload_viscous_bounce_time<F: Float>(
         return Err(Error::new(Parameter::ClosingSpeed, Reason::Overflow));
     }
     let j0 = start / scale;
-    let time = log_growth(j0 / loss, F::TWO * zeta / F::from_f64(3.0)) * (root_m / root_k);
+    let time = log_growth_of_ratio(j0, loss, F::TWO * zeta / F::from_f64(3.0)) * (root_m / root_k);
     Ok(Estimate {
         time: derived(time, Parameter::PreloadForce)?,
         expected_error: accuracy::t_b1v(j0, restitution, zeta),
@@ -138,11 +150,11 @@ pub(crate) fn asymptotic_time<F: Float>(a: &Asymptote<F>, j1: F, j2: F) -> Time<
         // integral of J dJ / (B J^2 + C): t_b2r, and t_b2 when B = 0.
         let squares = drop * (j1 + j2);
         let base = a.linear * j2 * j2 + a.inverse;
-        Time::At(log_growth(squares / base, a.linear) * F::HALF)
+        Time::At(log_growth_of_ratio(squares, base, a.linear) * F::HALF)
     } else if a.constant > F::ZERO {
         // integral of dJ / (A + B J): t_b1v, and t_b1 when B = 0.
         let base = a.constant + a.linear * j2;
-        Time::At(log_growth(drop / base, a.linear))
+        Time::At(log_growth_of_ratio(drop, base, a.linear))
     } else if a.linear > F::ZERO && j2 > F::ZERO {
         Time::At((j1.ln() - j2.ln()) / a.linear)
     } else {
@@ -177,10 +189,14 @@ pub(crate) fn asymptotic_count<F: Float>(
                 if scale.is_finite() && u.is_finite() {
                     Count::Finite(k * scale * ln1p_ratio(u))
                 } else {
-                    // u beyond the float's range: ln1p(u) = ln u to far below rounding, in
-                    // logarithms (k / A stays near 1 / r).
+                    // The ratio beyond the float's range: u in logarithms (k / A stays near
+                    // 1 / r). u itself may still be small (A tiny: f32, r = 4e-10 and
+                    // v0 = 1e30 gave u = 0.02 and a negative count when ln1p(u) was taken as
+                    // ln u), so ln1p(u) exactly where u is a number, and ln u only beyond.
                     let ln_u = a.constant.ln() + (j1 - j2).ln() - j2.ln() - rate.ln();
-                    let n = k / a.constant * ln_u;
+                    let u = ln_u.exp();
+                    let ln1p_u = if u.is_finite() { u.ln_1p() } else { ln_u };
+                    let n = k / a.constant * ln1p_u;
                     if n.is_finite() {
                         Count::Finite(n)
                     } else {
@@ -364,9 +380,9 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         let start = self.start_impulse();
         // (3/(2 zeta Omega)) ln(1 + z) = t_b1 ln(1+z)/z, z = (2 zeta / 3) j0 / r: no division
         // by zeta, and finite where z overflows.
-        let j0_over_r = start / (self.loss() * scale);
         Some(Estimate {
-            time: log_growth(j0_over_r, F::TWO * zeta / F::from_f64(3.0)) / omega,
+            time: log_growth_of_ratio(start / scale, self.loss(), F::TWO * zeta / F::from_f64(3.0))
+                / omega,
             expected_error: accuracy::t_b1v(start / scale, self.restitution(), zeta),
         })
     }

@@ -608,3 +608,42 @@ fn an_acceleration_scale_beyond_the_float_is_refused() {
     assert!(checked > 0);
     assert!(faults.is_empty(), "{faults:?}");
 }
+
+#[test]
+fn ratios_beyond_f32_are_taken_in_logarithms() {
+    // Found by the raw-bits harness at 3,000,000 inputs: f32, a preload (Omega 45 rad/s,
+    // |Delta| 1.1e-5 m), r = 3.9e-10, zeta 1, closing at 1e30 m/s. j0 / r overflowed f32: the
+    // closed tier's t_b1v was `Never` and its count above the threshold -8.0e9 (ln1p(u) taken as
+    // ln u for u = 0.02). Now the f32 closed tier agrees with f64's to f32 rounding over ~100
+    // operations (1e-5), and every check passes.
+    fn scene<F: Float>() -> Scene<F, Viscous<F>> {
+        Scene::new(
+            Contact {
+                frequency: Frequency::MassStiffness {
+                    mass: F::from_f64(0.000_486_582_66),
+                    stiffness: F::ONE,
+                },
+                offset: Offset::PreloadForce(F::from_f64(1.106_350_1e-5)),
+                restitution: Restitution::Loss(F::from_f64(3.941_207e-10)),
+                closing_speed: F::from_f64(1e30),
+                threshold: Threshold::Impulse(F::from_f64(6.900_839e-12)),
+            },
+            Viscous::new(F::ONE).expect("valid"),
+        )
+        .expect("accepted")
+    }
+    let (narrow, wide) = (scene::<f32>(), scene::<f64>());
+    let (mut checked, mut faults) = (0, Vec::new());
+    check_scene(&narrow, "f32", &mut checked, &mut faults);
+    assert!(faults.is_empty(), "{faults:?}");
+    let (a, b) = (narrow.predict(Method::Closed), wide.predict(Method::Closed));
+    let close = |x: f32, y: f64| (f64::from(x) / y - 1.0).abs() < 1e-5;
+    let (Some(ta), Some(tb)) = (a.end_time.seconds(), b.end_time.seconds()) else {
+        panic!("no end: {a:?} {b:?}");
+    };
+    assert!(close(ta, tb), "{a:?} vs {b:?}");
+    let (Some(na), Some(nb)) = (a.impacts_above.value(), b.impacts_above.value()) else {
+        panic!("no count: {a:?} {b:?}");
+    };
+    assert!(close(na, nb), "{a:?} vs {b:?}");
+}
