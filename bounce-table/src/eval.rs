@@ -49,7 +49,7 @@ impl Method {
 }
 
 /// Parsed options.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub struct Options {
     /// Tier.
     pub method: Method,
@@ -59,6 +59,8 @@ pub struct Options {
     pub single: bool,
     /// Averaged tier nodes.
     pub nodes: Nodes,
+    /// The JSON Lines file to read; standard input when `None`.
+    pub file: Option<String>,
 }
 
 /// Parses `eval`'s options.
@@ -71,6 +73,7 @@ pub fn options(args: &[String]) -> Result<Options, String> {
         tolerance: 0.01,
         single: false,
         nodes: Nodes::N8,
+        file: None,
     };
     let mut it = args.iter();
     while let Some(arg) = it.next() {
@@ -116,7 +119,14 @@ pub fn options(args: &[String]) -> Result<Options, String> {
                         "--nodes: '{v}' is not one of 2, 4, 6, 8, 10, 12, 16, 20"
                     ))?;
             }
-            other => return Err(format!("eval: unknown option '{other}'")),
+            other if other.starts_with('-') => {
+                return Err(format!("unknown option '{other}'"))
+            }
+            file => {
+                if out.file.replace(file.to_owned()).is_some() {
+                    return Err("give one scene file (or none, for standard input)".to_owned());
+                }
+            }
         }
     }
     Ok(out)
@@ -342,16 +352,29 @@ pub fn evaluate(
     result.map_err(|e| (input.name.clone(), e))
 }
 
-/// Runs `eval` over stdin; returns whether every line succeeded.
+/// The scene file to read, or standard input.
 ///
 /// # Errors
-/// When stdin or stdout fail.
-pub fn run(options: &Options) -> std::io::Result<bool> {
-    let stdin = std::io::stdin();
+/// When the file cannot be opened (the message names it).
+pub fn input(options: &Options) -> std::io::Result<Box<dyn BufRead>> {
+    Ok(match &options.file {
+        Some(path) => Box::new(std::io::BufReader::new(
+            std::fs::File::open(path)
+                .map_err(|e| std::io::Error::new(e.kind(), format!("{path}: {e}")))?,
+        )),
+        None => Box::new(std::io::stdin().lock()),
+    })
+}
+
+/// Runs `eval` over `input` ([`input`]); returns whether every line succeeded.
+///
+/// # Errors
+/// When reading the input or writing stdout fails.
+pub fn run(options: &Options, input: Box<dyn BufRead>) -> std::io::Result<bool> {
     let stdout = std::io::stdout();
     let mut out = stdout.lock();
     let mut all_ok = true;
-    for (index, line) in stdin.lock().lines().enumerate() {
+    for (index, line) in input.lines().enumerate() {
         let line = line?;
         if line.trim().is_empty() {
             continue;

@@ -43,7 +43,7 @@ macro_rules! outln {
 
 const USAGE: &str = "usage: bounce-table [OPTIONS] [SCENE_FILE]
        bounce-table eval [--method exact|exact-tier|map|averaged|closed|auto] [--tolerance X]
-                         [--precision f32|f64] [--nodes N] < scenes.jsonl
+                         [--precision f32|f64] [--nodes N] [scenes.jsonl, else stdin]
        bounce-table replay [--period S] [--split F] [--time-scale X] [--switch-type TYPE]
                            [--format table|markdown|json|curve] [--plot DIR]
                            [--capture-format jsonl|csv|vcd] [calibrate's capture options] CAPTURE
@@ -58,7 +58,7 @@ Prints predicted bounce and debounce windows: for the built-in catalogue of typi
 (.toml with [[switch]] tables, .json, or .jsonl; the keys of `eval`, and any number may be a
 tolerance: {min = a, max = b} or {value = x, spread = s}).
 
-Options:
+Options (every subcommand also takes -h/--help, -V/--version, and --option=value):
   --period SECONDS     tick period of the windows (default 1e-4)
   --format FORMAT      table, markdown, csv, json, c (a header) or rust (constants)
   --output FILE        write there, completely or not at all (default: standard output)
@@ -166,7 +166,6 @@ fn parse(args: &[String]) -> Result<Options, String> {
             }
             "--output" => o.output = Some(value("--output")?),
             "--plot" => o.plot = Some(value("--plot")?),
-            "-h" | "--help" => return Err(String::new()),
             other if other.starts_with('-') => return Err(format!("unknown option '{other}'")),
             file => {
                 if o.file.replace(file.to_owned()).is_some() {
@@ -195,7 +194,7 @@ fn replay_main(args: &[String]) -> ExitCode {
     let request = match replay::options(args) {
         Ok(r) => r,
         Err(message) => {
-            eprintln!("bounce-table replay: {message}\n{USAGE}");
+            eprintln!("bounce-table replay: {message}\n{SEE_HELP}");
             return ExitCode::from(2);
         }
     };
@@ -260,17 +259,52 @@ fn replay_main(args: &[String]) -> ExitCode {
     ExitCode::SUCCESS
 }
 
+/// What an error adds after its message: where the usage is (not the whole usage).
+const SEE_HELP: &str = "(bounce-table --help shows the usage)";
+
+/// The arguments as given, with `--option=value` split into `--option value` (both forms are
+/// accepted everywhere).
+fn split_equals(args: impl Iterator<Item = String>) -> Vec<String> {
+    let mut out = Vec::new();
+    for arg in args {
+        match arg.split_once('=') {
+            Some((name, value)) if name.starts_with("--") && name.len() > 2 => {
+                out.push(name.to_owned());
+                out.push(value.to_owned());
+            }
+            _ => out.push(arg),
+        }
+    }
+    out
+}
+
 fn main() -> ExitCode {
-    let args: Vec<String> = std::env::args().skip(1).collect();
+    let args = split_equals(std::env::args().skip(1));
+    // Every subcommand takes --help and --version.
+    if args.iter().any(|a| a == "--version" || a == "-V") {
+        outln!("bounce-table {}", env!("CARGO_PKG_VERSION"));
+        return ExitCode::SUCCESS;
+    }
+    if args.iter().any(|a| a == "--help" || a == "-h") {
+        outln!("{USAGE}");
+        return ExitCode::SUCCESS;
+    }
     if args.first().is_some_and(|a| a == "eval") {
         let options = match eval::options(args.get(1..).unwrap_or_default()) {
             Ok(o) => o,
             Err(message) => {
-                eprintln!("bounce-table: {message}\n{USAGE}");
+                eprintln!("bounce-table eval: {message}\n{SEE_HELP}");
                 return ExitCode::from(2);
             }
         };
-        return match eval::run(&options) {
+        let input = match eval::input(&options) {
+            Ok(input) => input,
+            Err(e) => {
+                eprintln!("bounce-table eval: {e}");
+                return ExitCode::from(2);
+            }
+        };
+        return match eval::run(&options, input) {
             Ok(true) => ExitCode::SUCCESS,
             Ok(false) => ExitCode::FAILURE,
             Err(e) => {
@@ -286,7 +320,7 @@ fn main() -> ExitCode {
         let options = match calibrate::options(args.get(1..).unwrap_or_default()) {
             Ok(o) => o,
             Err(message) => {
-                eprintln!("bounce-table calibrate: {message}\n{USAGE}");
+                eprintln!("bounce-table calibrate: {message}\n{SEE_HELP}");
                 return ExitCode::from(2);
             }
         };
@@ -359,12 +393,8 @@ fn main() -> ExitCode {
     }
     let options = match parse(&args) {
         Ok(o) => o,
-        Err(message) if message.is_empty() => {
-            outln!("{USAGE}");
-            return ExitCode::SUCCESS;
-        }
         Err(message) => {
-            eprintln!("bounce-table: {message}\n\n{USAGE}");
+            eprintln!("bounce-table: {message}\n{SEE_HELP}");
             return ExitCode::from(2);
         }
     };

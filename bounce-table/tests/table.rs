@@ -433,3 +433,54 @@ fn a_restitution_range_near_one_is_not_refused_by_its_sensitivity_step() {
     );
     assert!(String::from_utf8_lossy(&out.stdout).contains("Sensitivity of a"));
 }
+
+#[test]
+fn every_subcommand_takes_help_version_and_option_equals_value() {
+    for sub in [&[][..], &["eval"][..], &["calibrate"][..], &["replay"][..]] {
+        let help = run(&[sub, &["--help"]].concat());
+        assert_eq!(help.status.code(), Some(0), "{sub:?} --help");
+        assert!(String::from_utf8_lossy(&help.stdout).starts_with("usage: bounce-table"));
+        let version = run(&[sub, &["-V"]].concat());
+        assert_eq!(version.status.code(), Some(0), "{sub:?} -V");
+        assert_eq!(
+            String::from_utf8_lossy(&version.stdout).trim(),
+            concat!("bounce-table ", env!("CARGO_PKG_VERSION"))
+        );
+    }
+    // --format=csv is --format csv.
+    let (a, b) = (
+        run(&["--format=csv", "--samples", "50"]),
+        run(&["--format", "csv", "--samples", "50"]),
+    );
+    assert_eq!(a.status.code(), Some(0));
+    assert_eq!(a.stdout, b.stdout);
+    // A bad option is one line and where the usage is, exit status 2.
+    let bad = run(&["calibrate", "--bogus", "x.jsonl"]);
+    assert_eq!(bad.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&bad.stderr);
+    assert_eq!(err.lines().count(), 2, "{err}");
+    assert!(
+        err.contains("unknown option '--bogus'") && err.contains("--help"),
+        "{err}"
+    );
+}
+
+#[test]
+fn eval_reads_a_scene_file_or_standard_input() {
+    let path = tmp("eval-file.jsonl");
+    std::fs::write(
+        &path,
+        "{\"name\":\"dome\",\"omega\":1e4,\"gap\":-1e-4,\"restitution\":0.7,\"closing_speed\":0.5}\n",
+    )
+    .expect("write");
+    let out = run(&["eval", path.to_str().expect("utf-8 path")]);
+    assert_eq!(out.status.code(), Some(0));
+    let line = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        line.contains("\"name\":\"dome\"") && line.contains("end_time"),
+        "{line}"
+    );
+    let missing = run(&["eval", "/nonexistent/scenes.jsonl"]);
+    assert_eq!(missing.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&missing.stderr).contains("/nonexistent/scenes.jsonl"));
+}

@@ -116,7 +116,7 @@ pub fn options(args: &[String]) -> Result<Options, String> {
                     other => return Err(format!("--export: '{other}' is not c or rust")),
                 });
             }
-            other if other.starts_with('-') => return Err(format!("unknown option {other}")),
+            other if other.starts_with('-') => return Err(format!("unknown option '{other}'")),
             path => {
                 if file.replace(path.to_owned()).is_some() {
                     return Err("give one capture file".to_owned());
