@@ -56,10 +56,11 @@ impl Rng {
     }
 }
 
+/// Switches tried: `FUZZ_RAW`, else `FUZZ_SCENES`, else 10,000 (most are refused).
 fn scenes() -> usize {
-    std::env::var("FUZZ_SCENES")
-        .ok()
-        .and_then(|v| v.parse().ok())
+    ["FUZZ_RAW", "FUZZ_SCENES"]
+        .iter()
+        .find_map(|v| std::env::var(v).ok().and_then(|v| v.parse().ok()))
         .unwrap_or(10_000)
 }
 
@@ -106,6 +107,7 @@ fn fault(e: cb_error, p: &cb_prediction) -> Option<&'static str> {
 fn raw_inputs_to_the_c_api_get_error_codes_or_sound_answers() {
     let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
     let (mut accepted, mut faults) = (0usize, Vec::new());
+    let mut slowest = std::time::Duration::ZERO;
     for _ in 0..scenes() {
         let sw = cb_switch {
             mass: rng.value(),
@@ -127,18 +129,33 @@ fn raw_inputs_to_the_c_api_get_error_codes_or_sound_answers() {
             flags: 0,
         };
         let tolerance = rng.value();
+        // Each call timed: the worst case is measured and reported, not tested.
+        let mut timed = |f: &mut dyn FnMut(&mut cb_prediction) -> cb_error| {
+            let start = std::time::Instant::now();
+            let e = f(&mut p);
+            slowest = slowest.max(start.elapsed());
+            (e, p)
+        };
         let answers = [
-            ("closed", cb_predict_closed(Some(&sw), Some(&mut p)), p),
-            ("averaged", cb_predict_averaged(Some(&sw), Some(&mut p)), p),
-            ("map", cb_predict_map(Some(&sw), Some(&mut p)), p),
-            ("exact", cb_predict_exact(Some(&sw), Some(&mut p)), p),
+            (
+                "closed",
+                timed(&mut |p| cb_predict_closed(Some(&sw), Some(p))),
+            ),
+            (
+                "averaged",
+                timed(&mut |p| cb_predict_averaged(Some(&sw), Some(p))),
+            ),
+            ("map", timed(&mut |p| cb_predict_map(Some(&sw), Some(p)))),
+            (
+                "exact",
+                timed(&mut |p| cb_predict_exact(Some(&sw), Some(p))),
+            ),
             (
                 "auto",
-                cb_predict_auto(Some(&sw), tolerance, Some(&mut p)),
-                p,
+                timed(&mut |p| cb_predict_auto(Some(&sw), tolerance, Some(p))),
             ),
         ];
-        for (tier, e, p) in answers {
+        for (tier, (e, p)) in answers {
             if let Some(f) = fault(e, &p) {
                 faults.push(format!("{tier}: {f}: {sw:?} -> {e:?} {p:?}"));
             }
@@ -200,6 +217,14 @@ fn raw_inputs_to_the_c_api_get_error_codes_or_sound_answers() {
     for f in faults.iter().take(10) {
         eprintln!("  {f}");
     }
+    // The line scripts/fuzz.sh reads (a panic fails the run before it).
+    let nan = faults.iter().filter(|f| f.contains("NaN")).count();
+    eprintln!(
+        "fuzz-summary harness=c-api inputs={} checked={accepted} nan={nan} inconsistent={} slowest_us={:.1}",
+        scenes(),
+        faults.len() - nan,
+        slowest.as_secs_f64() * 1e6
+    );
     assert!(
         accepted > 0,
         "nothing accepted: the harness tests nothing past validation"

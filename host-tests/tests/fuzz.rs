@@ -39,6 +39,45 @@ fn scenes() -> usize {
         .unwrap_or(10_000)
 }
 
+/// Inputs per float of the raw-bits harness: `FUZZ_RAW`, else [`scenes`] (its inputs are
+/// mostly refused by validation, so a long run takes many more of them).
+fn raw_scenes() -> usize {
+    std::env::var("FUZZ_RAW")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or_else(scenes)
+}
+
+/// The slowest prediction seen over every harness of this run (ns), and what it was. Every
+/// tier's work is bounded by construction (`Scene::exact_work`); this measures the worst case
+/// the bounds allow (a timing is a measurement here, never a pass/fail test).
+static SLOWEST: std::sync::Mutex<(u128, String)> = std::sync::Mutex::new((0, String::new()));
+
+/// The class of a fault, for the report: NaN (a NaN, infinite or negative number), or an
+/// inconsistency (an order or a bound between two results broken).
+fn class(fault: &str) -> &'static str {
+    if fault.contains("NaN") || fault.contains("inf") || fault.contains("negative") {
+        "NaN or infinite"
+    } else {
+        "inconsistent"
+    }
+}
+
+/// One line a script can read: the harness, what it tried and checked, and its faults by
+/// class (a panic fails the run before this line is printed); then the slowest call so far.
+fn summary(harness: &str, inputs: usize, checked: usize, faults: &[String]) {
+    let count = |c: &str| faults.iter().filter(|f| class(f) == c).count();
+    let (ns, what) = SLOWEST.lock().map(|s| s.clone()).unwrap_or_default();
+    #[allow(clippy::cast_precision_loss)]
+    let us = ns as f64 / 1e3;
+    eprintln!(
+        "fuzz-summary harness={harness} inputs={inputs} checked={checked} nan={} inconsistent={} slowest_us={us:.1}",
+        count("NaN or infinite"),
+        count("inconsistent"),
+    );
+    eprintln!("fuzz-slowest {what}");
+}
+
 /// What is wrong with a prediction, if anything.
 fn fault<F: Float>(p: &Prediction<F>) -> Option<&'static str> {
     let bad = |x: F| !x.is_finite() || x < F::ZERO;
@@ -242,7 +281,17 @@ fn check_scene<F: Float + std::fmt::Debug, D: contact_bounce::Dissipation<F>>(
         },
         Method::Auto(auto),
     ] {
+        let start = std::time::Instant::now();
         let p = scene.predict(method);
+        let took = start.elapsed().as_nanos();
+        if let Ok(mut slowest) = SLOWEST.lock() {
+            if took > slowest.0 {
+                *slowest = (
+                    took,
+                    format!("{method:?} ({}), {what}", std::any::type_name::<F>()),
+                );
+            }
+        }
         *checked += 1;
         if let Some(why) = fault(&p) {
             faults.push(format!("{why}: {method:?}, {what}: {p:?}"));
@@ -258,6 +307,7 @@ fn predictions_on_random_scenes_are_finite_and_consistent() {
     let (b, more) = predictions::<f32>(&mut rng, n);
     faults.extend(more);
     eprintln!("{} predictions checked, {} faults", a + b, faults.len());
+    summary("scenes", 2 * n, a + b, &faults);
     let mut classes = std::collections::BTreeMap::new();
     for f in &faults {
         let class: String = f
@@ -326,6 +376,9 @@ fn the_debouncers_on_random_samples_and_windows_report_alternating_edges() {
         assert_eq!(state.is_closed(), level);
         assert_eq!(key.is_closed(), learned_level);
     }
+    // Every inconsistency is an assertion above: reaching here means none.
+    let n = scenes() / 20;
+    summary("debouncers", n, 2 * n, &[]);
 }
 
 /// A value for the raw-bits harness: a quarter of the time the float of a raw bit pattern, a
@@ -469,7 +522,7 @@ fn raw_bit_patterns_get_typed_errors_or_sound_answers() {
     // FUZZ_SCENES inputs per float (CI: 10,000, each drawing 10 values: 200,000 values);
     // scripts/fuzz.sh: millions.
     let mut rng = Rng(0x2545_F491_4F6C_DD1D);
-    let n = scenes();
+    let n = raw_scenes();
     let (a, ca, mut faults) = raw_inputs::<f64>(&mut rng, n, f64::from_bits);
     let (b, cb, more) = raw_inputs::<f32>(&mut rng, n, |bits| {
         f32::from_bits(u32::try_from(bits >> 32).unwrap_or(0))
@@ -482,6 +535,7 @@ fn raw_bit_patterns_get_typed_errors_or_sound_answers() {
         ca + cb,
         faults.len()
     );
+    summary("raw-bits", 4 * n, ca + cb, &faults);
     assert!(
         a + b > 0,
         "no scene accepted: the harness tests nothing past validation"
