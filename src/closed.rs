@@ -95,8 +95,9 @@ pub(crate) fn log_growth_of_ratio<F: Float>(num: F, den: F, k: F) -> F {
 /// [`PHYSICAL_RANGE`](crate::PHYSICAL_RANGE); [`Parameter::Restitution`] outside
 /// [1e-6, 1 - 1e-12]; [`Parameter::DampingRatio`] negative, below 1e-12 but not 0, or above
 /// 1e3; [`Parameter::ClosingSpeed`] with [`Reason::Overflow`] for a first impulse below
-/// [`Scene::impulse_floor`]; [`Parameter::PreloadForce`] with [`Reason::Overflow`] when the
-/// time leaves the float's range.
+/// [`Scene::impulse_floor`] or Omega (1 + R) v0 above the float's largest value over 2^17;
+/// [`Parameter::PreloadForce`] with [`Reason::Overflow`] when the time leaves the float's
+/// range.
 pub fn preload_viscous_bounce_time<F: Float>(
     mass: F,
     stiffness: F,
@@ -126,6 +127,11 @@ pub fn preload_viscous_bounce_time<F: Float>(
     // (k m can leave f32's range where each is inside it).
     let (root_m, root_k) = (mass.sqrt(), stiffness.sqrt());
     let scale = derived(force / (root_k * root_m), Parameter::PreloadForce)?;
+    // As Scene::new: an acceleration scale Omega (1 + R) v0 beyond the float's largest value
+    // over 2^17 is refused.
+    if !(root_k / root_m * (F::ONE + restitution) * speed * F::from_f64(131_072.0)).is_finite() {
+        return Err(Error::new(Parameter::ClosingSpeed, Reason::Overflow));
+    }
     let start = F::TWO * restitution * speed;
     // As Scene::new: a first impulse below the floor has no phase the float can hold.
     if start < F::MIN_POSITIVE * F::from_f64(1e3) * (F::TWO * scale).max(F::ONE) {

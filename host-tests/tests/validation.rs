@@ -621,6 +621,30 @@ fn the_lean_t_b1v_agrees_with_the_scenes_and_refuses_what_the_scene_refuses() {
     assert_eq!(refused(m, k, f, v, r, -0.1), Err(Parameter::DampingRatio));
     assert_eq!(refused(m, k, f, v, r, 1e-13), Err(Parameter::DampingRatio));
     assert_eq!(refused(m, k, f, v, r, 0.0), Ok(()));
+    // An acceleration scale Omega (1 + R) v0 beyond f32's largest value over 2^17 (Omega 2.6e16
+    // rad/s at 1e30 m/s): both refuse it, naming the closing speed.
+    let lean = preload_viscous_bounce_time(1e-30_f32, 651.0, 1e-3, 1e30, 0.7, 0.01);
+    assert_eq!(
+        lean.map_err(|e| e.parameter()).map(|_| ()),
+        Err(Parameter::ClosingSpeed)
+    );
+    let scene = Scene::new(
+        Contact {
+            frequency: Frequency::MassStiffness {
+                mass: 1e-30_f32,
+                stiffness: 651.0,
+            },
+            offset: Offset::PreloadForce(1e-3),
+            restitution: Restitution::Coefficient(0.7),
+            closing_speed: 1e30,
+            threshold: Threshold::None,
+        },
+        Viscous::new(0.01).expect("valid"),
+    );
+    assert_eq!(
+        scene.map(|_| ()).map_err(|e| e.parameter()),
+        Err(Parameter::ClosingSpeed)
+    );
 }
 
 #[test]
