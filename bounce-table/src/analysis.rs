@@ -30,6 +30,9 @@ pub struct Settings {
     pub threads: usize,
     /// Show a progress bar on stderr for long runs.
     pub progress: bool,
+    /// Safety factor on the window (at least 1): the window is this times the bound (the
+    /// Monte Carlo's percentile, or the nominal upper bound); 1 is none.
+    pub margin: f64,
 }
 
 impl Default for Settings {
@@ -42,6 +45,7 @@ impl Default for Settings {
             seed: 1,
             threads: std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get),
             progress: false,
+            margin: 1.0,
         }
     }
 }
@@ -313,17 +317,18 @@ pub fn analyse(
         let s = sensitivities(template, settings.tolerance)?;
         (Some(mc), s)
     };
-    let window = monte_carlo.as_ref().map_or(nominal.upper, |m| m.window);
-    let ticks = contact_bounce::Window::from_seconds(
-        window,
-        &contact_bounce::Margin::none(),
-        settings.period,
-    )
-    .map_err(|e| FieldError {
-        field: "period".to_owned(),
+    let bound = monte_carlo.as_ref().map_or(nominal.upper, |m| m.window);
+    let margin = contact_bounce::Margin::new(settings.margin, 0.0).map_err(|e| FieldError {
+        field: "margin".to_owned(),
         message: e.to_string(),
-    })?
-    .ticks();
+    })?;
+    let window = settings.margin * bound;
+    let ticks = contact_bounce::Window::from_seconds(bound, &margin, settings.period)
+        .map_err(|e| FieldError {
+            field: "period".to_owned(),
+            message: e.to_string(),
+        })?
+        .ticks();
     Ok(Analysis {
         name: name.to_owned(),
         nominal,

@@ -64,6 +64,7 @@ Options (every subcommand also takes -h/--help, -V/--version, and --option=value
   --output FILE        write there, completely or not at all (default: standard output)
   --tolerance X        relative error asked of the model, else the exact reference (0.1)
   --percentile P       percentile of the Monte Carlo window with tolerances (99.9)
+  --margin F           safety factor on every window, at least 1 (1: none; 1.5 for +50 %)
   --samples N          Monte Carlo samples (4000)
   --seed S             Monte Carlo seed (1)
   --threads N          worker threads (all cores)
@@ -137,6 +138,15 @@ fn parse(args: &[String]) -> Result<Options, String> {
             }
             "--tolerance" => {
                 o.settings.tolerance = positive("--tolerance", &value("--tolerance")?)?
+            }
+            "--margin" => {
+                let m = positive("--margin", &value("--margin")?)?;
+                if m < 1.0 {
+                    return Err(format!(
+                        "--margin: {m} is below 1 (a factor the window is multiplied by)"
+                    ));
+                }
+                o.settings.margin = m;
             }
             "--percentile" => {
                 let p = positive("--percentile", &value("--percentile")?)?;

@@ -484,3 +484,31 @@ fn eval_reads_a_scene_file_or_standard_input() {
     assert_eq!(missing.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&missing.stderr).contains("/nonexistent/scenes.jsonl"));
 }
+
+#[test]
+fn a_margin_multiplies_every_window_and_below_one_is_refused() {
+    let window = |margin: &str| -> Vec<(f64, u64)> {
+        let out = run(&["--format", "json", "--samples", "100", "--margin", margin]);
+        assert_eq!(out.status.code(), Some(0));
+        let rows: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+        rows.as_array()
+            .expect("rows")
+            .iter()
+            .map(|r| {
+                (
+                    r["window"].as_f64().expect("window"),
+                    r["ticks"].as_u64().expect("ticks"),
+                )
+            })
+            .collect()
+    };
+    let (plain, wide) = (window("1"), window("1.5"));
+    assert_eq!(plain.len(), wide.len());
+    for ((w, t), (w15, t15)) in plain.iter().zip(&wide) {
+        assert!((w15 / w - 1.5).abs() < 1e-12, "{w} -> {w15}");
+        assert!(t15 >= t, "{t} -> {t15}");
+    }
+    let bad = run(&["--margin", "0.5"]);
+    assert_eq!(bad.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("--margin"));
+}
