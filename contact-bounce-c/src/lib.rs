@@ -25,7 +25,7 @@
 use contact_bounce::{
     preload_viscous_bounce_time, Contact, Edge, Error, Frequency, Margin, Method, Mode, Nodes,
     Offset, Parameter, Prediction, Reason, Regime, Restitution, Scene, State, Threshold, Tier,
-    Time, Tolerance, Viscous, Window, Windows, DEFAULT_MAX_IMPACTS, EXACT_MAX_IMPACTS,
+    Tolerance, Viscous, Window, Windows, DEFAULT_MAX_IMPACTS, EXACT_MAX_IMPACTS,
 };
 
 /// A panic cannot happen (the core and this crate have no panicking path); on a bare-metal
@@ -490,19 +490,13 @@ pub extern "C" fn cb_window_ticks(
         return NULL;
     };
     let bounce = if p.flags & CB_HAS_END != 0 {
-        Time::At(p.end_time)
+        Some(p.end_time)
     } else if p.flags & CB_HAS_LAST_ABOVE != 0 {
-        Time::At(p.last_above_time)
+        Some(p.last_above_time)
     } else {
-        Time::Never
+        None
     };
-    ticks_for(
-        bounce.seconds(),
-        margin_factor,
-        margin_extra,
-        sample_period,
-        ticks,
-    )
+    ticks_for(bounce, margin_factor, margin_extra, sample_period, ticks)
 }
 
 /// The window covering `seconds` of bounce, as `cb_window_ticks` (for `cb_preload_bounce_time`).
