@@ -196,7 +196,9 @@ fn raw_inputs_to_the_c_api_get_error_codes_or_sound_answers() {
         if e.code() == 0
             && !(est.time.is_finite() && est.time >= 0.0 && est.expected_error.is_finite())
         {
-            faults.push(format!("tb1v: a NaN, infinite or negative estimate {est:?} for {sw:?}"));
+            faults.push(format!(
+                "tb1v: a NaN, infinite or negative estimate {est:?} for {sw:?}"
+            ));
         }
         let mut ticks = 0;
         let e = cb_seconds_to_ticks(
