@@ -184,32 +184,27 @@ fn monte_carlo(template: &Template, settings: &Settings) -> Result<MonteCarlo, F
     let n = settings.samples.max(1);
     let threads = u64::try_from(settings.threads.max(1)).unwrap_or(1).min(n);
     let done = AtomicU64::new(0);
-    let results: Vec<Result<Vec<Estimate>, FieldError>> = std::thread::scope(|scope| {
-        let handles: Vec<_> = (0..threads)
-            .map(|k| {
-                let done = &done;
-                scope.spawn(move || {
-                    let mut out = Vec::new();
-                    let mut i = k;
-                    while i < n {
-                        out.push(estimate(
-                            &template.sample(settings.seed, i),
-                            settings.tolerance,
-                        )?);
-                        done.fetch_add(1, Ordering::Relaxed);
-                        i += threads;
-                    }
-                    Ok(out)
-                })
-            })
-            .collect();
-        if settings.progress {
-            progress(&done, n, &handles);
+    let work = |k: usize| -> Result<Vec<Estimate>, FieldError> {
+        let mut out = Vec::new();
+        let mut i = u64::try_from(k).unwrap_or(u64::MAX);
+        while i < n {
+            out.push(estimate(
+                &template.sample(settings.seed, i),
+                settings.tolerance,
+            )?);
+            done.fetch_add(1, Ordering::Relaxed);
+            i += threads;
         }
-        handles
-            .into_iter()
-            .map(|h| {
-                h.join().unwrap_or_else(|_| {
+        Ok(out)
+    };
+    let results: Vec<Result<Vec<Estimate>, FieldError>> = std::thread::scope(|scope| {
+        let jobs = crate::workers::spawn_each(scope, usize::try_from(threads).unwrap_or(1), &work);
+        if settings.progress {
+            progress(&done, n, &jobs);
+        }
+        jobs.into_iter()
+            .map(|job| {
+                job.join(&work).unwrap_or_else(|| {
                     Err(FieldError {
                         field: String::new(),
                         message: "a worker panicked".to_owned(),
@@ -248,7 +243,7 @@ fn monte_carlo(template: &Template, settings: &Settings) -> Result<MonteCarlo, F
     })
 }
 
-fn progress<T>(done: &AtomicU64, total: u64, handles: &[std::thread::ScopedJoinHandle<'_, T>]) {
+fn progress<T>(done: &AtomicU64, total: u64, handles: &[crate::workers::Job<'_, T>]) {
     use std::io::Write;
     let start = std::time::Instant::now();
     let mut shown = false;

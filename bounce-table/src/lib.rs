@@ -15,3 +15,4 @@ pub mod scene_input;
 pub mod scenes;
 pub mod spreads;
 pub mod strict;
+pub mod workers;

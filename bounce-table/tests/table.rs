@@ -299,6 +299,34 @@ fn a_reader_that_stops_early_ends_the_run_quietly() {
     assert!(!stderr.contains("panicked"), "{stderr}");
 }
 
+#[cfg(unix)]
+#[test]
+fn threads_the_system_refuses_are_worked_on_the_calling_thread() {
+    // 256 workers need 512 MB of stacks; under a 200 MB address-space limit the system refuses
+    // most of them (the Monte Carlo used to panic: "failed to spawn thread"). The answer must
+    // not change: sample i is the same on any thread.
+    let args = [
+        example(),
+        "--samples".into(),
+        "2000".into(),
+        "--threads".into(),
+        "256".into(),
+    ];
+    let free = Command::new(BIN).args(&args).output().expect("run");
+    assert!(free.status.success());
+    let limited = Command::new("sh")
+        .arg("-c")
+        .arg("ulimit -v 200000 && exec \"$0\" \"$@\"")
+        .arg(BIN)
+        .args(&args)
+        .output()
+        .expect("run under a limit");
+    let stderr = String::from_utf8_lossy(&limited.stderr);
+    assert!(limited.status.success(), "{:?}: {stderr}", limited.status);
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    assert_eq!(limited.stdout, free.stdout);
+}
+
 /// A JSON scene file of switches with these names (the tactile dome's parameters).
 fn named(file: &str, names: &[&str]) -> std::path::PathBuf {
     let switches: Vec<serde_json::Value> = names

@@ -431,17 +431,13 @@ pub fn report(groups: &super::Groups, seed: u64) -> String {
         } else {
             0.0
         };
-        let fits = std::thread::scope(|scope| {
-            let jobs = [Kind::TwoBody, Kind::Compliant].map(|k| {
-                let train = &train;
-                (
-                    k,
-                    scope.spawn(move || ContactFit::fit(k, train, reopening, seed)),
-                )
-            });
-            jobs.map(|(k, job)| (k, job.join().ok().flatten()))
+        let kinds = [Kind::TwoBody, Kind::Compliant];
+        let fits = crate::workers::each(kinds.len(), &|i| {
+            kinds
+                .get(i)
+                .and_then(|&k| ContactFit::fit(k, &train, reopening, seed))
         });
-        for (k, c) in fits {
+        for (k, c) in kinds.into_iter().zip(fits.into_iter().map(Option::flatten)) {
             match c {
                 Some(c) => out.push_str(&format!(
                     "| {switch} | {split} | {} | {}; reopens {} | {:.4} | {} |\n",
@@ -463,12 +459,12 @@ pub fn report(groups: &super::Groups, seed: u64) -> String {
         }
         out
     };
-    let sections: Vec<String> = std::thread::scope(|scope| {
-        let jobs: Vec<_> = tasks.iter().map(|t| scope.spawn(move || rows(t))).collect();
-        jobs.into_iter()
-            .map(|j| j.join().unwrap_or_else(|_| "| a fit failed |\n".to_owned()))
-            .collect()
-    });
+    let sections: Vec<String> = crate::workers::each(tasks.len(), &|i| {
+        tasks.get(i).map(&rows).unwrap_or_default()
+    })
+    .into_iter()
+    .map(|s| s.unwrap_or_else(|| "| a fit failed |\n".to_owned()))
+    .collect();
     out.push_str(&sections.concat());
     out
 }
