@@ -13,6 +13,8 @@ pub mod priors;
 pub mod replay;
 pub mod scene_input;
 pub mod scenes;
+pub mod spool;
 pub mod spreads;
 pub mod strict;
+pub mod table;
 pub mod workers;

@@ -8,10 +8,11 @@
 
 use std::process::ExitCode;
 
-use bounce_table::analysis::{analyse, Settings};
-use bounce_table::output::{clash, identifier, render, Format};
-use bounce_table::scenes::{catalogue, read, FileError};
-use bounce_table::{calibrate, eval, plot, replay, scene_input::SceneInput};
+use bounce_table::analysis::Settings;
+
+use bounce_table::output::{clash, identifier, render_to, Format};
+use bounce_table::scenes::{catalogue, open, Entries};
+use bounce_table::{calibrate, eval, plot, replay, scene_input::SceneInput, table};
 
 /// Writes to standard output. A reader that stopped early (`bounce-table ... | head`) ends the
 /// run quietly with success, as it does for other command-line tools; any other failure to
@@ -189,10 +190,27 @@ fn parse(args: &[String]) -> Result<Options, String> {
 
 /// Writes `text` to `path` completely or not at all (a temporary file, then a rename).
 fn write_atomically(path: &str, text: &str) -> std::io::Result<()> {
+    write_atomically_with(path, |w| w.write_all(text.as_bytes()))
+}
+
+/// Writes what `write` writes to `path` completely or not at all: into a temporary file beside
+/// it, renamed over it once complete.
+fn write_atomically_with(
+    path: &str,
+    write: impl FnOnce(&mut dyn std::io::Write) -> std::io::Result<()>,
+) -> std::io::Result<()> {
     let target = std::path::Path::new(path);
     let tmp = target.with_extension(format!("tmp-{}", std::process::id()));
-    // A failed write (a full disk) or rename leaves no temporary file behind.
-    std::fs::write(&tmp, text)
+    // A failed write (a full disk, an error while rendering) or rename leaves no temporary
+    // file behind.
+    std::fs::File::create(&tmp)
+        .and_then(|file| {
+            let mut w = std::io::BufWriter::new(file);
+            write(&mut w)?;
+            w.into_inner()
+                .map_err(std::io::IntoInnerError::into_error)?
+                .sync_all()
+        })
         .and_then(|()| std::fs::rename(&tmp, target))
         .inspect_err(|_| {
             let _ = std::fs::remove_file(&tmp);
@@ -409,51 +427,10 @@ fn main() -> ExitCode {
         }
     };
     let typical = options.file.is_none();
-    let entries = match &options.file {
-        None => catalogue(),
-        Some(path) => match read(path) {
-            Ok(entries) => entries,
-            Err(errors) => {
-                for e in errors {
-                    eprintln!("bounce-table: {e}");
-                }
-                return ExitCode::from(2);
-            }
-        },
-    };
     let source = options
         .file
         .clone()
         .unwrap_or_else(|| "catalogue".to_owned());
-    let mut analyses = Vec::new();
-    let mut failed = false;
-    for (i, entry) in entries.iter().enumerate() {
-        match analyse(&entry.name, &entry.template, &options.settings) {
-            Ok(a) => analyses.push(a),
-            Err(e) => {
-                let err = FileError {
-                    file: source.clone(),
-                    place: format!("entry {} ({})", i + 1, entry.name),
-                    field: e.field,
-                    message: e.message,
-                };
-                eprintln!("bounce-table: {err}");
-                failed = true;
-            }
-        }
-    }
-    if failed {
-        // Nothing is written when any switch failed.
-        return ExitCode::from(2);
-    }
-    if matches!(options.format, Format::C | Format::Rust) {
-        if let Some((a, b, id)) = clash(analyses.iter().map(|a| a.name.as_str())) {
-            eprintln!(
-                "bounce-table: {source}: switches '{a}' and '{b}' both become {id} in generated code: rename one"
-            );
-            return ExitCode::from(2);
-        }
-    }
     if let (Some(input), Some(output)) = (&options.file, &options.output) {
         let same = std::fs::canonicalize(input)
             .ok()
@@ -464,22 +441,85 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     }
-    let text = render(options.format, &analyses, &options.settings, typical);
-    match &options.output {
-        Some(path) => {
-            if let Err(e) = write_atomically(path, &text) {
-                eprintln!("bounce-table: {path}: cannot write it: {e}");
-                return ExitCode::FAILURE;
+    let entries = match &options.file {
+        None => Entries::catalogue(),
+        Some(path) => match open(path) {
+            Ok(entries) => entries,
+            Err(errors) => {
+                for e in errors {
+                    eprintln!("bounce-table: {e}");
+                }
+                return ExitCode::from(2);
             }
+        },
+    };
+    let Some((mut analyses, layout)) = table::analyse_all(
+        entries,
+        &options.settings,
+        options.format,
+        &source,
+        &mut |message| eprintln!("bounce-table: {message}"),
+    ) else {
+        // Nothing is written when any switch failed.
+        return ExitCode::from(2);
+    };
+    let (format, settings) = (options.format, &options.settings);
+    let written = match &options.output {
+        Some(path) => write_atomically_with(path, |w| {
+            render_to(w, format, &mut analyses, settings, typical, Some(layout))
+        }),
+        None => {
+            let mut stdout = std::io::BufWriter::new(std::io::stdout().lock());
+            render_to(
+                &mut stdout,
+                format,
+                &mut analyses,
+                settings,
+                typical,
+                Some(layout),
+            )
+            .and_then(|()| std::io::Write::flush(&mut stdout))
+            .inspect_err(|e| {
+                // A reader that stopped early ends the run quietly (see `emit`).
+                if e.kind() == std::io::ErrorKind::BrokenPipe {
+                    std::process::exit(0);
+                }
+            })
         }
-        None => out!("{text}"),
+    };
+    if let Err(e) = written {
+        let path = options.output.as_deref().unwrap_or("standard output");
+        eprintln!("bounce-table: {path}: cannot write it: {e}");
+        return ExitCode::FAILURE;
     }
     if let Some(dir) = &options.plot {
         if let Err(e) = std::fs::create_dir_all(dir) {
             eprintln!("bounce-table: {dir}: {e}");
             return ExitCode::FAILURE;
         }
-        for (entry, a) in entries.iter().zip(&analyses) {
+        let entries = match &options.file {
+            None => Box::new(catalogue().into_iter().map(Ok)) as Box<dyn Iterator<Item = _>>,
+            Some(path) => match open(path) {
+                Ok(entries) => Box::new(entries),
+                Err(errors) => {
+                    for e in errors {
+                        eprintln!("bounce-table: {e}");
+                    }
+                    return ExitCode::FAILURE;
+                }
+            },
+        };
+        let rows = match analyses.rows() {
+            Ok(rows) => rows,
+            Err(e) => {
+                eprintln!("bounce-table: {e}");
+                return ExitCode::FAILURE;
+            }
+        };
+        for (entry, a) in entries.zip(rows) {
+            let (Ok(entry), Ok(a)) = (entry, a) else {
+                continue;
+            };
             let Ok(input) = SceneInput::from_json(entry.template.nominal(), &entry.name) else {
                 continue;
             };

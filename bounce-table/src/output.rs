@@ -1,7 +1,7 @@
 //! The tables and the firmware constants: terminal, markdown, CSV, JSON, a C header and a Rust
 //! source file (windows in ticks of the chosen period; both compile as they are).
 
-use std::fmt::Write as _;
+use std::io::Write;
 
 use serde_json::json;
 
@@ -143,71 +143,187 @@ const HEADERS: [&str; 8] = [
     "ticks",
 ];
 
+/// Where [`render_to`] reads the analyses from: it may read them several times over (a table's
+/// column widths need every row before the first is written).
+pub trait Rows {
+    /// Every analysis, from the first.
+    ///
+    /// # Errors
+    /// The analyses cannot be read (a spool on disk).
+    fn rows(&mut self)
+        -> std::io::Result<Box<dyn Iterator<Item = std::io::Result<Analysis>> + '_>>;
+
+    /// False only where no analysis has sensitivities (their lines need no pass then).
+    fn any_sensitivity(&self) -> bool {
+        true
+    }
+}
+
+impl Rows for &[Analysis] {
+    fn rows(
+        &mut self,
+    ) -> std::io::Result<Box<dyn Iterator<Item = std::io::Result<Analysis>> + '_>> {
+        Ok(Box::new(self.iter().cloned().map(Ok)))
+    }
+}
+
+impl Rows for crate::spool::Spool {
+    fn rows(
+        &mut self,
+    ) -> std::io::Result<Box<dyn Iterator<Item = std::io::Result<Analysis>> + '_>> {
+        Ok(Box::new(crate::spool::Spool::rows(self)?))
+    }
+
+    fn any_sensitivity(&self) -> bool {
+        crate::spool::Spool::any_sensitivity(self)
+    }
+}
+
 /// The published figures of the catalogue's types beside the windows over the assumed ranges.
-fn published_lines(analyses: &[Analysis], out: &mut String) {
-    let _ = write!(
+fn published_lines(analyses: &mut dyn Rows, out: &mut dyn Write) -> std::io::Result<()> {
+    write!(
         out,
         "\nPublished for these types (a window for a switch nobody measured should cover them too):"
-    );
-    for a in analyses {
+    )?;
+    let mut below = 0_usize;
+    for a in analyses.rows()? {
+        let a = a?;
         if let Some(p) = crate::priors::published(&a.name) {
             let verdict = if a.window >= p.max {
                 "covers"
             } else {
+                below += 1;
                 "is below"
             };
-            let _ = write!(
+            write!(
                 out,
                 "\n- {}: {}. The window over the ranges ({}) {verdict} their {}.",
                 a.name,
                 p.evidence,
                 time(a.window),
                 time(p.max)
-            );
+            )?;
         }
     }
-    let _ = writeln!(
+    writeln!(
         out,
         "\n- Any hand-operated switch: `bounce-table replay` takes the survey's P99.9, 157 ms, as its prior."
-    );
-    let below = analyses
-        .iter()
-        .filter(|a| crate::priors::published(&a.name).is_some_and(|p| a.window < p.max))
-        .count();
+    )?;
     if below > 0 {
-        let _ = writeln!(
+        writeln!(
             out,
             "{below} of these windows are below what is published for their type: real switches vary more \
              than the assumed ranges say. A window that must hold without a capture takes the published \
              figure; `bounce-table calibrate` on a capture of the switch gives one that holds and is short."
-        );
+        )?;
     }
+    Ok(())
 }
 
-fn sensitivity_lines(analyses: &[Analysis], out: &mut String) {
-    for a in analyses.iter().filter(|a| !a.sensitivity.is_empty()) {
-        let _ = write!(
+fn sensitivity_lines(analyses: &mut dyn Rows, out: &mut dyn Write) -> std::io::Result<()> {
+    for a in analyses.rows()? {
+        let a = a?;
+        if a.sensitivity.is_empty() {
+            continue;
+        }
+        write!(
             out,
             "\nSensitivity of {} (tighten first the parameters on the left):",
             a.name
-        );
+        )?;
         for s in &a.sensitivity {
-            let _ = write!(
+            write!(
                 out,
                 " {} ({:+.2}, {})",
                 s.parameter,
                 s.elasticity,
                 percent(s.contribution)
-            );
+            )?;
         }
-        out.push('\n');
+        writeln!(out)?;
+    }
+    Ok(())
+}
+
+/// The after-table lines: the published figures for the catalogue, else the sensitivities.
+fn closing_lines(
+    analyses: &mut dyn Rows,
+    out: &mut dyn Write,
+    typical: bool,
+) -> std::io::Result<()> {
+    if typical {
+        published_lines(analyses, out)
+    } else if analyses.any_sensitivity() {
+        sensitivity_lines(analyses, out)
+    } else {
+        Ok(())
+    }
+}
+
+/// A window in whole nanoseconds (rounded up) for generated code; `None` beyond a `u64`
+/// (about 585 years), which the caller refuses rather than write a wrong number.
+#[must_use]
+pub fn window_ns(window: f64) -> Option<u64> {
+    let ns = (window * 1e9).ceil();
+    // 18_446_744_073_709_549_568 is the largest f64 below 2^64.
+    if ns.is_finite() && (0.0..=18_446_744_073_709_549_568.0).contains(&ns) {
+        format!("{ns:.0}").parse().ok()
+    } else {
+        None
+    }
+}
+
+/// The column widths of the terminal table, fitted to rows as they arrive (so a spool need not
+/// be read twice to lay it out).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Layout([usize; 8]);
+
+impl Default for Layout {
+    fn default() -> Self {
+        Self(HEADERS.map(|h| h.chars().count()))
+    }
+}
+
+impl Layout {
+    /// The widths of one row's cells.
+    #[must_use]
+    pub fn of(a: &Analysis, settings: &Settings) -> Self {
+        Self(columns(a, settings).map(|c| c.chars().count()))
+    }
+
+    /// Widened to hold `other`'s cells too.
+    pub fn fit(&mut self, other: Self) {
+        for (w, o) in self.0.iter_mut().zip(other.0) {
+            *w = (*w).max(o);
+        }
     }
 }
 
 /// Renders the analyses.
 #[must_use]
 pub fn render(format: Format, analyses: &[Analysis], settings: &Settings, typical: bool) -> String {
-    let mut out = String::new();
+    let mut out = Vec::new();
+    // Writing to memory fails only where a window has no nanosecond form (checked by callers).
+    let _ = render_to(&mut out, format, &mut { analyses }, settings, typical, None);
+    String::from_utf8(out).unwrap_or_default()
+}
+
+/// Renders the analyses to `out` as they are read from `analyses` (each row is read when it is
+/// written, so a spool of a million switches is never held in memory). The table's `layout`,
+/// if the caller fitted it to every row, else it is fitted here (one more read).
+///
+/// # Errors
+/// Reading the analyses or writing fails; `InvalidData` for a window beyond a `u64` of
+/// nanoseconds in generated code.
+#[allow(clippy::too_many_lines)]
+pub fn render_to(
+    out: &mut dyn Write,
+    format: Format,
+    analyses: &mut dyn Rows,
+    settings: &Settings,
+    typical: bool,
+    layout: Option<Layout>,
+) -> std::io::Result<()> {
     let note = if typical {
         "Typical parameters (assumed values, not a datasheet), each over an assumed range (mass and \
          stiffness +-20 %, preload force +-30 %, R +-0.1, damping ratio +-50 %, closing speed +-50 %): \
@@ -216,181 +332,221 @@ pub fn render(format: Format, analyses: &[Analysis], settings: &Settings, typica
         ""
     };
     let period = time(settings.period);
+    let threads = settings.threads;
     match format {
         Format::Table => {
-            out.push_str(note);
-            let _ = writeln!(out, "Windows in ticks of {period}; tier: the cheapest within {} (else the exact reference).\n", percent(settings.tolerance));
-            let rows: Vec<[String; 8]> = analyses.iter().map(|a| columns(a, settings)).collect();
-            let widths: Vec<usize> = (0..8)
-                .map(|i| {
-                    rows.iter()
-                        .map(|r| r[i].chars().count())
-                        .chain([HEADERS[i].chars().count()])
-                        .max()
-                        .unwrap_or(0)
-                })
-                .collect();
-            let line = |cells: &[String]| {
-                cells
-                    .iter()
-                    .zip(&widths)
-                    // Padded by hand: a width in a format string is limited to 65,535, and a
-                    // switch's name is not.
-                    .map(|(c, w)| format!("{c}{}", " ".repeat(w.saturating_sub(c.chars().count()))))
-                    .collect::<Vec<_>>()
-                    .join("  ")
+            write!(out, "{note}")?;
+            writeln!(out, "Windows in ticks of {period}; tier: the cheapest within {} (else the exact reference).\n", percent(settings.tolerance))?;
+            let widths = match layout {
+                Some(l) => l.0,
+                None => {
+                    let mut l = Layout::default();
+                    for a in analyses.rows()? {
+                        l.fit(Layout::of(&a?, settings));
+                    }
+                    l.0
+                }
             };
-            let _ = writeln!(out, "{}", line(&HEADERS.map(str::to_owned)).trim_end());
-            for r in &rows {
-                let _ = writeln!(out, "{}", line(r).trim_end());
-            }
-            if typical {
-                published_lines(analyses, &mut out);
-            } else {
-                sensitivity_lines(analyses, &mut out);
-            }
+            // Every cell but the last padded to its column's width (by hand: a width in a
+            // format string is limited to 65,535, and a switch's name is not).
+            let line = |cells: &[String; 8]| {
+                let mut text = String::new();
+                for (i, (c, w)) in cells.iter().zip(widths).enumerate() {
+                    if i + 1 == cells.len() {
+                        text.push_str(c.trim_end());
+                        text.push('\n');
+                    } else {
+                        text.push_str(c);
+                        let pad = w.saturating_sub(c.chars().count()) + 2;
+                        text.extend(std::iter::repeat_n(' ', pad));
+                    }
+                }
+                text
+            };
+            out.write_all(line(&HEADERS.map(str::to_owned)).as_bytes())?;
+            write_rows(out, analyses, threads, &|a, _| {
+                Ok(line(&columns(a, settings)))
+            })?;
+            closing_lines(analyses, out, typical)?;
         }
         Format::Markdown => {
             if typical {
-                let _ = writeln!(out, "{}", note.trim_end());
-                out.push('\n');
+                writeln!(out, "{}", note.trim_end())?;
+                writeln!(out)?;
             }
-            let _ = writeln!(out, "Windows in ticks of {period}.\n");
-            let _ = writeln!(out, "| {} |", HEADERS.join(" | "));
-            let _ = writeln!(out, "|{}", "---|".repeat(8));
-            for a in analyses {
-                let _ = writeln!(out, "| {} |", columns(a, settings).join(" | "));
-            }
-            if typical {
-                published_lines(analyses, &mut out);
-            } else {
-                sensitivity_lines(analyses, &mut out);
-            }
+            writeln!(out, "Windows in ticks of {period}.\n")?;
+            writeln!(out, "| {} |", HEADERS.join(" | "))?;
+            writeln!(out, "|{}", "---|".repeat(8))?;
+            write_rows(out, analyses, threads, &|a, _| {
+                Ok(format!("| {} |\n", columns(a, settings).join(" | ")))
+            })?;
+            closing_lines(analyses, out, typical)?;
         }
         Format::Csv => {
-            let _ = writeln!(out, "switch,regime,bounce_s,upper_s,impacts,tier,expected_error,window_s,ticks,tick_period_s,monte_carlo_samples,percentile");
-            for a in analyses {
-                let mc = a.monte_carlo.as_ref();
-                let _ = writeln!(
-                    out,
-                    "\"{}\",{},{:e},{:e},{},\"{}\",{},{:e},{},{:e},{},{}",
-                    a.name.replace('"', "\"\""),
-                    a.nominal.regime,
-                    a.nominal.bounce,
-                    a.nominal.upper,
-                    a.nominal
-                        .impacts
-                        .map_or_else(String::new, |n| format!("{n}")),
-                    a.nominal.tier,
-                    a.nominal.expected_error,
-                    a.window,
-                    a.ticks,
-                    settings.period,
-                    mc.map_or(0, |m| m.samples),
-                    mc.map_or(String::new(), |_| settings.percentile.to_string()),
-                );
-            }
+            writeln!(out, "switch,regime,bounce_s,upper_s,impacts,tier,expected_error,window_s,ticks,tick_period_s,monte_carlo_samples,percentile")?;
+            write_rows(out, analyses, threads, &|a, _| Ok(csv_row(a, settings)))?;
         }
         Format::Json => {
-            let rows: Vec<_> = analyses
-                .iter()
-                .map(|a| {
-                    json!({
-                        "name": a.name,
-                        "regime": a.nominal.regime,
-                        "bounce": a.nominal.bounce,
-                        "upper": a.nominal.upper,
-                        "impacts": a.nominal.impacts,
-                        "tier": a.nominal.tier,
-                        "expected_error": a.nominal.expected_error,
-                        "window": a.window,
-                        "ticks": a.ticks,
-                        "tick_period": settings.period,
-                        "monte_carlo": a.monte_carlo.as_ref().map(|m| json!({
-                            "samples": m.samples, "seed": settings.seed, "percentile": settings.percentile,
-                            "p50": m.p50, "window": m.window, "max": m.max, "exact_samples": m.exact,
-                        })),
-                        "sensitivity": a.sensitivity.iter().map(|s| json!({
-                            "parameter": s.parameter, "elasticity": s.elasticity, "contribution": s.contribution,
-                        })).collect::<Vec<_>>(),
-                        "typical": typical,
-                    })
-                })
-                .collect();
-            let _ = writeln!(
-                out,
-                "{}",
-                serde_json::to_string_pretty(&rows).unwrap_or_default()
-            );
+            // A pretty-printed array, one element at a time: each element as serde_json prints
+            // it inside an array (indented by two spaces).
+            let any = write_rows(out, analyses, threads, &|a, i| {
+                let text = serde_json::to_string_pretty(&json_row(a, settings, typical))
+                    .map_err(std::io::Error::other)?;
+                Ok(format!(
+                    "{}\n  {}",
+                    if i == 0 { "[" } else { "," },
+                    text.replace('\n', "\n  ")
+                ))
+            })?;
+            writeln!(out, "{}", if any { "\n]" } else { "[]" })?;
         }
         Format::C => {
-            let _ = writeln!(
+            writeln!(
                 out,
                 "/* Generated by bounce-table: debounce windows in ticks of {period}. */"
-            );
+            )?;
             if typical {
-                let _ = writeln!(out, "/* Typical parameters over assumed ranges: assumed values, not a datasheet. */");
+                writeln!(out, "/* Typical parameters over assumed ranges: assumed values, not a datasheet. */")?;
             }
-            let _ = writeln!(out, "#ifndef BOUNCE_TABLE_H\n#define BOUNCE_TABLE_H\n");
-            for a in analyses {
+            writeln!(out, "#ifndef BOUNCE_TABLE_H\n#define BOUNCE_TABLE_H\n")?;
+            write_rows(out, analyses, threads, &|a, _| {
                 let id = identifier(&a.name);
-                let _ = writeln!(
-                    out,
-                    "/* {}: bounce {} ({}), window {} */",
+                let ns = window_ns(a.window).ok_or_else(|| too_long(a))?;
+                Ok(format!(
+                    "/* {}: bounce {} ({}), window {} */\n#define BOUNCE_{id}_WINDOW_TICKS {}u\n#define BOUNCE_{id}_WINDOW_NS {ns}ull\n\n",
                     comment(&a.name),
                     time(a.nominal.bounce),
                     a.nominal.tier,
-                    time(a.window)
-                );
-                let _ = writeln!(out, "#define BOUNCE_{id}_WINDOW_TICKS {}u", a.ticks);
-                let ns = (a.window * 1e9).ceil();
-                let _ = writeln!(
-                    out,
-                    "#define BOUNCE_{id}_WINDOW_NS {}ull\n",
-                    if ns.is_finite() && ns < 1.8e19 {
-                        format!("{ns:.0}")
-                    } else {
-                        "0".to_owned()
-                    }
-                );
-            }
-            let _ = writeln!(out, "#endif /* BOUNCE_TABLE_H */");
+                    time(a.window),
+                    a.ticks
+                ))
+            })?;
+            writeln!(out, "#endif /* BOUNCE_TABLE_H */")?;
         }
         Format::Rust => {
-            let _ = writeln!(
+            writeln!(
                 out,
                 "//! Generated by bounce-table: debounce windows in ticks of {period}."
-            );
+            )?;
             if typical {
-                let _ = writeln!(
+                writeln!(
                     out,
                     "//! Typical parameters over assumed ranges: assumed values, not a datasheet."
-                );
+                )?;
             }
-            for a in analyses {
+            write_rows(out, analyses, threads, &|a, _| {
                 let id = identifier(&a.name);
-                let _ = writeln!(
-                    out,
-                    "\n/// {}: bounce {} ({}), window {}.",
+                let ns = window_ns(a.window).ok_or_else(|| too_long(a))?;
+                Ok(format!(
+                    "\n/// {}: bounce {} ({}), window {}.\npub const {id}_WINDOW_TICKS: u32 = {};\n/// The same window in nanoseconds, rounded up.\npub const {id}_WINDOW_NS: u64 = {ns};\n",
                     comment(&a.name),
                     time(a.nominal.bounce),
                     a.nominal.tier,
-                    time(a.window)
-                );
-                let _ = writeln!(out, "pub const {id}_WINDOW_TICKS: u32 = {};", a.ticks);
-                let ns = (a.window * 1e9).ceil();
-                let _ = writeln!(out, "/// The same window in nanoseconds, rounded up.");
-                let _ = writeln!(
-                    out,
-                    "pub const {id}_WINDOW_NS: u64 = {};",
-                    if ns.is_finite() && ns < 1.8e19 {
-                        format!("{ns:.0}")
-                    } else {
-                        "0".to_owned()
-                    }
-                );
-            }
+                    time(a.window),
+                    a.ticks
+                ))
+            })?;
         }
     }
-    out
+    Ok(())
+}
+
+/// A window with no nanosecond form in generated code.
+fn too_long(a: &Analysis) -> std::io::Error {
+    std::io::Error::new(
+        std::io::ErrorKind::InvalidData,
+        format!(
+            "{}: the window, {}, is beyond a 64-bit count of nanoseconds",
+            a.name,
+            time(a.window)
+        ),
+    )
+}
+
+fn csv_row(a: &Analysis, settings: &Settings) -> String {
+    let mc = a.monte_carlo.as_ref();
+    format!(
+        "\"{}\",{},{:e},{:e},{},\"{}\",{},{:e},{},{:e},{},{}\n",
+        a.name.replace('"', "\"\""),
+        a.nominal.regime,
+        a.nominal.bounce,
+        a.nominal.upper,
+        a.nominal
+            .impacts
+            .map_or_else(String::new, |n| format!("{n}")),
+        a.nominal.tier,
+        a.nominal.expected_error,
+        a.window,
+        a.ticks,
+        settings.period,
+        mc.map_or(0, |m| m.samples),
+        mc.map_or(String::new(), |_| settings.percentile.to_string()),
+    )
+}
+
+fn json_row(a: &Analysis, settings: &Settings, typical: bool) -> serde_json::Value {
+    json!({
+        "name": a.name,
+        "regime": a.nominal.regime,
+        "bounce": a.nominal.bounce,
+        "upper": a.nominal.upper,
+        "impacts": a.nominal.impacts,
+        "tier": a.nominal.tier,
+        "expected_error": a.nominal.expected_error,
+        "window": a.window,
+        "ticks": a.ticks,
+        "tick_period": settings.period,
+        "monte_carlo": a.monte_carlo.as_ref().map(|m| json!({
+            "samples": m.samples, "seed": settings.seed, "percentile": settings.percentile,
+            "p50": m.p50, "window": m.window, "max": m.max, "exact_samples": m.exact,
+        })),
+        "sensitivity": a.sensitivity.iter().map(|s| json!({
+            "parameter": s.parameter, "elasticity": s.elasticity, "contribution": s.contribution,
+        })).collect::<Vec<_>>(),
+        "typical": typical,
+    })
+}
+
+/// Writes `row(analysis, its index)` for every analysis, in order: read a block at a time and
+/// formatted on `threads` threads (a million rows are formatting, not writing). True if there
+/// was any row.
+fn write_rows(
+    out: &mut dyn Write,
+    analyses: &mut dyn Rows,
+    threads: usize,
+    row: &(dyn Fn(&Analysis, usize) -> std::io::Result<String> + Sync),
+) -> std::io::Result<bool> {
+    const BLOCK: usize = 4096;
+    let mut rows = analyses.rows()?;
+    let mut first = 0;
+    loop {
+        let block = rows
+            .by_ref()
+            .take(BLOCK)
+            .collect::<std::io::Result<Vec<Analysis>>>()?;
+        if block.is_empty() {
+            return Ok(first > 0);
+        }
+        let workers = threads.clamp(1, block.len().div_ceil(256));
+        let share = block.len().div_ceil(workers);
+        let format_part = |k: usize| {
+            block
+                .iter()
+                .enumerate()
+                .skip(k * share)
+                .take(share)
+                .map(|(i, a)| row(a, first + i))
+                .collect::<std::io::Result<Vec<String>>>()
+        };
+        for (k, part) in crate::workers::each(workers, &format_part)
+            .into_iter()
+            .enumerate()
+        {
+            // A worker that panicked: its rows again, here.
+            for text in part.unwrap_or_else(|| format_part(k))? {
+                out.write_all(text.as_bytes())?;
+            }
+        }
+        first += block.len();
+    }
 }

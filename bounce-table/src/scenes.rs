@@ -72,51 +72,160 @@ pub fn catalogue() -> Vec<Entry> {
         .collect()
 }
 
-fn entries_of(file: &str, scenes: Vec<Value>) -> Result<Vec<Entry>, Vec<FileError>> {
-    let mut out = Vec::new();
-    let mut errors = Vec::new();
-    for (i, scene) in scenes.into_iter().enumerate() {
-        let name = scene
-            .get("name")
-            .and_then(Value::as_str)
-            .map_or_else(|| format!("entry {}", i + 1), str::to_owned);
-        let place = format!("entry {} ({name})", i + 1);
-        if !scene.is_object() {
-            errors.push(FileError {
-                file: file.to_owned(),
-                place,
-                field: String::new(),
-                message: "a switch must be a table/object".to_owned(),
-            });
-            continue;
-        }
-        // Validate the nominal scene now, so every entry's fault is reported at once.
-        let checked = Template::parse(&scene).and_then(|t| {
-            crate::scene_input::SceneInput::from_json(t.nominal(), &name)?.core::<f64>()?;
-            Ok(t)
-        });
-        match checked {
-            Ok(template) => out.push(Entry { name, template }),
-            Err(FieldError { field, message }) => errors.push(FileError {
-                file: file.to_owned(),
-                place,
-                field,
-                message,
-            }),
+/// One entry of a scene file (its place `index`, from 0), parsed: a table/object whose
+/// tolerances parse. [`check`] says whether its nominal scene makes a scene.
+fn entry_of(file: &str, index: usize, scene: Value) -> Result<Entry, FileError> {
+    let name = scene
+        .get("name")
+        .and_then(Value::as_str)
+        .map_or_else(|| format!("entry {}", index + 1), str::to_owned);
+    let fault = |field: String, message: String| FileError {
+        file: file.to_owned(),
+        place: format!("entry {} ({name})", index + 1),
+        field,
+        message,
+    };
+    if !scene.is_object() {
+        return Err(fault(
+            String::new(),
+            "a switch must be a table/object".to_owned(),
+        ));
+    }
+    match Template::from_value(scene) {
+        Ok(template) => Ok(Entry { name, template }),
+        Err(FieldError { field, message }) => Err(fault(field, message)),
+    }
+}
+
+/// Whether an entry's nominal scene makes a scene (the fault of an entry that parsed).
+///
+/// # Errors
+/// The field at fault.
+pub fn check(entry: &Entry) -> Result<(), FieldError> {
+    crate::scene_input::SceneInput::from_json(entry.template.nominal(), &entry.name)?
+        .core::<f64>()?;
+    Ok(())
+}
+
+/// The entries of a scene file, one at a time, each parsed or its fault (not yet
+/// [`check`]ed): a JSON Lines file is read a line at a time, so its length does not bound the
+/// memory a run takes. [`Entries::next_raw`] gives them unparsed, to parse on any thread.
+pub struct Entries {
+    file: std::sync::Arc<str>,
+    source: Source,
+    index: usize,
+}
+
+enum Source {
+    /// Entries ready (the catalogue).
+    Ready(std::vec::IntoIter<Entry>),
+    /// The entries of a whole document (TOML, JSON).
+    Document(std::vec::IntoIter<Value>),
+    /// A JSON Lines file: its lines and the number of the last read.
+    Lines(std::io::Lines<std::io::BufReader<std::fs::File>>, usize),
+}
+
+/// An entry as read from its file, not yet parsed: [`Raw::entry`] parses it.
+pub struct Raw {
+    file: std::sync::Arc<str>,
+    index: usize,
+    item: Item,
+}
+
+enum Item {
+    Ready(Entry),
+    Value(Value),
+    /// A line of a JSON Lines file, and its number.
+    Line(String, usize),
+    Fault(FileError),
+}
+
+impl Raw {
+    /// The entry, parsed, or its fault (naming the file, and the entry or line).
+    ///
+    /// # Errors
+    /// As [`Entries`].
+    pub fn entry(&self) -> Result<Entry, FileError> {
+        match &self.item {
+            Item::Ready(e) => Ok(e.clone()),
+            Item::Value(v) => entry_of(&self.file, self.index, v.clone()),
+            Item::Line(l, number) => match crate::strict::json(l) {
+                Ok(v) => entry_of(&self.file, self.index, v),
+                Err((_, message)) => Err(FileError {
+                    file: self.file.to_string(),
+                    place: format!("line {number}"),
+                    field: String::new(),
+                    message,
+                }),
+            },
+            Item::Fault(e) => Err(e.clone()),
         }
     }
-    if out.is_empty() && errors.is_empty() {
-        errors.push(FileError {
-            file: file.to_owned(),
-            place: String::new(),
-            field: String::new(),
-            message: "no switches in the file".to_owned(),
-        });
+
+    /// The file it is read from.
+    #[must_use]
+    pub fn file(&self) -> &str {
+        &self.file
     }
-    if errors.is_empty() {
-        Ok(out)
-    } else {
-        Err(errors)
+
+    /// Its place in the file, from 0 (blank lines do not count).
+    #[must_use]
+    pub fn index(&self) -> usize {
+        self.index
+    }
+}
+
+impl Entries {
+    /// The catalogue's entries, as a file's.
+    #[must_use]
+    pub fn catalogue() -> Self {
+        Self {
+            file: "catalogue".into(),
+            source: Source::Ready(catalogue().into_iter()),
+            index: 0,
+        }
+    }
+
+    /// The next entry, unparsed.
+    pub fn next_raw(&mut self) -> Option<Raw> {
+        let item = match &mut self.source {
+            Source::Ready(items) => Item::Ready(items.next()?),
+            Source::Document(items) => Item::Value(items.next()?),
+            Source::Lines(lines, number) => loop {
+                let line = lines.next()?;
+                *number += 1;
+                match line {
+                    Err(e) => {
+                        // An unreadable file gives the same error at every line: end here.
+                        let fault = Item::Fault(FileError {
+                            file: self.file.to_string(),
+                            place: format!("line {number}"),
+                            field: String::new(),
+                            message: format!("cannot read it: {e}"),
+                        });
+                        self.source = Source::Document(Vec::new().into_iter());
+                        break fault;
+                    }
+                    Ok(l) if l.trim().is_empty() => {}
+                    Ok(l) => break Item::Line(l, *number),
+                }
+            },
+        };
+        let raw = Raw {
+            file: self.file.clone(),
+            index: self.index,
+            item,
+        };
+        self.index += 1;
+        Some(raw)
+    }
+}
+
+impl Iterator for Entries {
+    type Item = Result<Entry, FileError>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        self.next_raw().map(|raw| raw.entry())
     }
 }
 
@@ -126,6 +235,43 @@ fn entries_of(file: &str, scenes: Vec<Value>) -> Result<Vec<Entry>, Vec<FileErro
 /// # Errors
 /// Every fault found, each naming the file, the entry (or line) and the field.
 pub fn read(path: &str) -> Result<Vec<Entry>, Vec<FileError>> {
+    let mut entries = Vec::new();
+    let mut errors = Vec::new();
+    for (i, entry) in open(path)?.enumerate() {
+        match entry.and_then(|e| match check(&e) {
+            Ok(()) => Ok(e),
+            Err(FieldError { field, message }) => Err(FileError {
+                file: path.to_owned(),
+                place: format!("entry {} ({})", i + 1, e.name),
+                field,
+                message,
+            }),
+        }) {
+            Ok(e) => entries.push(e),
+            Err(e) => errors.push(e),
+        }
+    }
+    if entries.is_empty() && errors.is_empty() {
+        errors.push(FileError {
+            file: path.to_owned(),
+            place: String::new(),
+            field: String::new(),
+            message: "no switches in the file".to_owned(),
+        });
+    }
+    if errors.is_empty() {
+        Ok(entries)
+    } else {
+        Err(errors)
+    }
+}
+
+/// Opens a scene file as for [`read`], and gives its entries one at a time ([`Entries`]). A
+/// file with no entries gives none: the caller says so.
+///
+/// # Errors
+/// A file that cannot be opened, or a document (TOML, JSON) that does not parse.
+pub fn open(path: &str) -> Result<Entries, Vec<FileError>> {
     let fail = |place: String, message: String| {
         vec![FileError {
             file: path.to_owned(),
@@ -134,6 +280,15 @@ pub fn read(path: &str) -> Result<Vec<Entry>, Vec<FileError>> {
             message,
         }]
     };
+    if path.ends_with(".jsonl") {
+        let file = std::fs::File::open(path)
+            .map_err(|e| fail(String::new(), format!("cannot read it: {e}")))?;
+        return Ok(Entries {
+            file: path.into(),
+            source: Source::Lines(std::io::BufRead::lines(std::io::BufReader::new(file)), 0),
+            index: 0,
+        });
+    }
     let text = std::fs::read_to_string(path)
         .map_err(|e| fail(String::new(), format!("cannot read it: {e}")))?;
     let scenes: Vec<Value> = if path.ends_with(".toml") {
@@ -178,19 +333,6 @@ pub fn read(path: &str) -> Result<Vec<Entry>, Vec<FileError>> {
             }
             _ => return Err(fail(String::new(), "no [[switch]] tables".to_owned())),
         }
-    } else if path.ends_with(".jsonl") {
-        let mut scenes = Vec::new();
-        for (i, line) in text
-            .lines()
-            .enumerate()
-            .filter(|(_, l)| !l.trim().is_empty())
-        {
-            scenes.push(
-                crate::strict::json(line)
-                    .map_err(|(_, message)| fail(format!("line {}", i + 1), message))?,
-            );
-        }
-        scenes
     } else {
         let doc: Value = crate::strict::json(&text)
             .map_err(|(line, message)| fail(format!("line {line}"), message))?;
@@ -214,5 +356,9 @@ pub fn read(path: &str) -> Result<Vec<Entry>, Vec<FileError>> {
             }
         }
     };
-    entries_of(path, scenes)
+    Ok(Entries {
+        file: path.into(),
+        source: Source::Document(scenes.into_iter()),
+        index: 0,
+    })
 }

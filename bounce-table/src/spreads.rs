@@ -110,23 +110,20 @@ fn walk(
     let Value::Object(object) = value else {
         return Ok(());
     };
-    let keys: Vec<String> = object.keys().cloned().collect();
-    for key in keys {
-        path.push(key.clone());
-        let field = path.join(".");
-        let child = object.get_mut(&key).ok_or_else(|| FieldError {
-            field: field.clone(),
-            message: "vanished".to_owned(),
-        })?;
+    // Only objects inside can be tolerances (or hold them): numbers and strings are skipped
+    // without a path.
+    for (key, child) in object.iter_mut() {
         if let Value::Object(inner) = child {
+            path.push(key.clone());
+            let field = path.join(".");
             if let Some(dist) = distribution(inner, &field)? {
                 *child = Value::from(dist.nominal());
                 params.push((path.clone(), dist));
             } else {
                 walk(child, path, params)?;
             }
+            path.pop();
         }
-        path.pop();
     }
     Ok(())
 }
@@ -149,7 +146,14 @@ impl Template {
     /// # Errors
     /// A malformed distribution, naming its field.
     pub fn parse(scene: &Value) -> Result<Self, FieldError> {
-        let mut nominal = scene.clone();
+        Self::from_value(scene.clone())
+    }
+
+    /// As [`Template::parse`], taking the scene.
+    ///
+    /// # Errors
+    /// As [`Template::parse`].
+    pub fn from_value(mut nominal: Value) -> Result<Self, FieldError> {
         let mut params = Vec::new();
         walk(&mut nominal, &mut Vec::new(), &mut params)?;
         Ok(Self { nominal, params })

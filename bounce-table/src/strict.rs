@@ -105,9 +105,23 @@ fn underflow(text: &str) -> Option<(usize, String)> {
                 i += 1;
             }
             let literal = &text[start..i];
-            let mantissa = literal.split(['e', 'E']).next().unwrap_or("");
+            let mut parts = literal.split(['e', 'E']);
+            let mantissa = parts.next().unwrap_or("");
             let nonzero = mantissa.bytes().any(|b| (b'1'..=b'9').contains(&b));
-            if nonzero && literal.parse::<f64>().is_ok_and(|v| v == 0.0) {
+            // A nonzero literal of L characters is at least 10^-L times 10^exponent, so it can
+            // read as 0 (below 2.5e-324) only if L + |exponent| > 323: an exponent of three
+            // significant digits or more, or a literal of over 200 characters. Only those are
+            // parsed (most literals are not: this scan runs on every line of a scene file).
+            let exponent = parts.next().unwrap_or("");
+            let long_exponent = exponent
+                .trim_start_matches(['-', '+'])
+                .trim_start_matches('0')
+                .len()
+                >= 3;
+            if nonzero
+                && (long_exponent || literal.len() > 200)
+                && literal.parse::<f64>().is_ok_and(|v| v == 0.0)
+            {
                 return Some((line, literal.to_owned()));
             }
             continue;
@@ -209,6 +223,25 @@ mod tests {
         assert!(message.contains("1e-400"), "{message}");
         // Zero written as zero is zero.
         assert!(json("{\"gap\": 0.0e-400, \"b\": 0}").is_ok());
+        // Underflows the scan's shortcut must still see: padded exponents, long mantissas with
+        // a short exponent, and long literals with none.
+        let zeros = |n: usize| "0".repeat(n);
+        for literal in [
+            "1e-0000400".to_owned(),
+            format!("0.{}1e-99", zeros(250)),
+            format!("0.{}1", zeros(330)),
+            format!("-{}e-330", "1".repeat(3)),
+        ] {
+            let (_, message) = json(&format!("{{\"gap\": {literal}}}")).expect_err(&literal);
+            assert!(message.contains("reads as 0"), "{literal}: {message}");
+        }
+        // And the smallest numbers that do not underflow read as they are.
+        for literal in ["5e-324", "1e-99", "4.9e-324"] {
+            assert!(
+                json(&format!("{{\"gap\": {literal}}}")).is_ok(),
+                "{literal}"
+            );
+        }
         assert!(json("[1] [2]").is_err());
     }
 

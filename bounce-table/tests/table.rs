@@ -327,6 +327,66 @@ fn threads_the_system_refuses_are_worked_on_the_calling_thread() {
     assert_eq!(limited.stdout, free.stdout);
 }
 
+#[cfg(target_os = "linux")]
+#[test]
+fn a_long_scene_file_is_streamed_in_bounded_memory() {
+    use std::process::Stdio;
+    // 100,000 switches (the catalogue's, renamed): the whole file used to be held, parsed, as
+    // JSON values, with every analysis and the whole rendered text (2 KB a line: 200 MB here,
+    // 2 GB for a million lines). Streamed, the peak does not grow with the file.
+    let catalogue = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenes/catalogue.jsonl"
+    ))
+    .expect("catalogue");
+    let lines: Vec<&str> = catalogue.lines().collect();
+    let n = 100_000;
+    let mut text = String::new();
+    for i in 0..n {
+        let line = lines[i % lines.len()];
+        let (_, rest) = line.split_once(',').expect("a name first");
+        text.push_str(&format!("{{\"name\": \"switch {i}\",{rest}\n"));
+    }
+    let path = tmp("long.jsonl");
+    std::fs::write(&path, text).expect("write");
+    let mut child = Command::new(BIN)
+        .arg(&path)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("spawn");
+    let status_file = format!("/proc/{}/status", child.id());
+    let stdout = child.stdout.take().expect("stdout");
+    let reader = std::thread::spawn(move || {
+        use std::io::BufRead;
+        std::io::BufReader::new(stdout).lines().count()
+    });
+    // The high-water mark of the resident set, read until the process ends (it only grows).
+    let mut peak_kb = 0_u64;
+    while child.try_wait().expect("wait").is_none() {
+        if let Ok(status) = std::fs::read_to_string(&status_file) {
+            if let Some(kb) = status
+                .lines()
+                .find_map(|l| l.strip_prefix("VmHWM:"))
+                .and_then(|v| v.trim().trim_end_matches("kB").trim().parse::<u64>().ok())
+            {
+                peak_kb = peak_kb.max(kb);
+            }
+        }
+        std::thread::sleep(std::time::Duration::from_millis(5));
+    }
+    let out = child.wait_with_output().expect("exit");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // The header lines and a row per switch.
+    assert_eq!(reader.join().expect("reader"), n + 3);
+    assert!(peak_kb > 0, "no resident set read");
+    assert!(peak_kb < 50_000, "peak resident set {peak_kb} kB");
+}
+
 /// A JSON scene file of switches with these names (the tactile dome's parameters).
 fn named(file: &str, names: &[&str]) -> std::path::PathBuf {
     let switches: Vec<serde_json::Value> = names

@@ -1,0 +1,321 @@
+//! The analyses of a long scene file, kept on disk instead of in memory: a table of a million
+//! switches is laid out (its column widths need every row) and written only once every switch
+//! is analysed, in memory that does not grow with the file.
+//!
+//! The file is private to the run: on Unix it is unlinked as soon as it is created (the open
+//! handle keeps it), elsewhere it is removed when the spool is dropped. Numbers are stored as
+//! their bits, so every value, infinities included, reads back exactly.
+
+use std::fs::File;
+use std::io::{self, BufReader, BufWriter, Read, Seek, SeekFrom, Write};
+use std::path::PathBuf;
+
+use crate::analysis::{Analysis, Estimate, MonteCarlo, Sensitivity};
+
+/// Analyses written once and read back any number of times, in order.
+pub struct Spool {
+    file: BufWriter<File>,
+    /// The path to remove on drop where it could not be unlinked at once.
+    path: Option<PathBuf>,
+    len: usize,
+    /// Whether any analysis has sensitivities.
+    sensitivity: bool,
+}
+
+impl Spool {
+    /// A new, empty spool in the system's temporary directory.
+    ///
+    /// # Errors
+    /// The temporary file cannot be created.
+    pub fn new() -> io::Result<Self> {
+        use std::sync::atomic::{AtomicU64, Ordering};
+        static NEXT: AtomicU64 = AtomicU64::new(0);
+        let path = std::env::temp_dir().join(format!(
+            "bounce-table-spool-{}-{}",
+            std::process::id(),
+            NEXT.fetch_add(1, Ordering::Relaxed)
+        ));
+        let file = std::fs::OpenOptions::new()
+            .read(true)
+            .write(true)
+            .create_new(true)
+            .open(&path)?;
+        let path = if cfg!(unix) && std::fs::remove_file(&path).is_ok() {
+            None
+        } else {
+            Some(path)
+        };
+        Ok(Self {
+            file: BufWriter::new(file),
+            path,
+            len: 0,
+            sensitivity: false,
+        })
+    }
+
+    /// How many analyses it holds.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.len
+    }
+
+    /// True when any analysis it holds has sensitivities.
+    #[must_use]
+    pub fn any_sensitivity(&self) -> bool {
+        self.sensitivity
+    }
+
+    /// True when it holds none.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    /// Appends one analysis.
+    ///
+    /// # Errors
+    /// The write fails (a full disk).
+    pub fn push(&mut self, a: &Analysis) -> io::Result<()> {
+        let w = &mut self.file;
+        text(w, &a.name)?;
+        text(w, &a.nominal.regime)?;
+        text(w, &a.nominal.tier)?;
+        for x in [
+            a.nominal.bounce,
+            a.nominal.upper,
+            a.nominal.expected_error,
+            a.window,
+        ] {
+            number(w, x)?;
+        }
+        optional(w, a.nominal.impacts)?;
+        w.write_all(&a.ticks.to_le_bytes())?;
+        match &a.monte_carlo {
+            None => w.write_all(&[0])?,
+            Some(m) => {
+                w.write_all(&[1])?;
+                w.write_all(&m.samples.to_le_bytes())?;
+                w.write_all(&m.exact.to_le_bytes())?;
+                for x in [m.p50, m.window, m.max] {
+                    number(w, x)?;
+                }
+            }
+        }
+        w.write_all(
+            &u64::try_from(a.sensitivity.len())
+                .unwrap_or(u64::MAX)
+                .to_le_bytes(),
+        )?;
+        for s in &a.sensitivity {
+            text(w, &s.parameter)?;
+            number(w, s.elasticity)?;
+            number(w, s.contribution)?;
+        }
+        self.len += 1;
+        self.sensitivity |= !a.sensitivity.is_empty();
+        Ok(())
+    }
+
+    /// Every analysis, in the order pushed. The spool can be read again afterwards.
+    ///
+    /// # Errors
+    /// The file cannot be flushed or rewound.
+    pub fn rows(&mut self) -> io::Result<Rows<'_>> {
+        self.file.flush()?;
+        let file = self.file.get_mut();
+        file.seek(SeekFrom::Start(0))?;
+        Ok(Rows {
+            reader: BufReader::new(file),
+            left: self.len,
+        })
+    }
+}
+
+impl Drop for Spool {
+    fn drop(&mut self) {
+        if let Some(path) = &self.path {
+            let _ = std::fs::remove_file(path);
+        }
+    }
+}
+
+/// The analyses of a [`Spool`], read back.
+pub struct Rows<'a> {
+    reader: BufReader<&'a mut File>,
+    left: usize,
+}
+
+impl Iterator for Rows<'_> {
+    type Item = io::Result<Analysis>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        if self.left == 0 {
+            return None;
+        }
+        self.left -= 1;
+        Some(read_analysis(&mut self.reader))
+    }
+}
+
+fn text(w: &mut impl Write, s: &str) -> io::Result<()> {
+    w.write_all(&u64::try_from(s.len()).unwrap_or(u64::MAX).to_le_bytes())?;
+    w.write_all(s.as_bytes())
+}
+
+fn number(w: &mut impl Write, x: f64) -> io::Result<()> {
+    w.write_all(&x.to_bits().to_le_bytes())
+}
+
+fn optional(w: &mut impl Write, x: Option<f64>) -> io::Result<()> {
+    match x {
+        None => w.write_all(&[0]),
+        Some(x) => {
+            w.write_all(&[1])?;
+            number(w, x)
+        }
+    }
+}
+
+fn bytes<const N: usize>(r: &mut impl Read) -> io::Result<[u8; N]> {
+    let mut b = [0; N];
+    r.read_exact(&mut b)?;
+    Ok(b)
+}
+
+fn read_u64(r: &mut impl Read) -> io::Result<u64> {
+    Ok(u64::from_le_bytes(bytes(r)?))
+}
+
+fn read_number(r: &mut impl Read) -> io::Result<f64> {
+    Ok(f64::from_bits(read_u64(r)?))
+}
+
+fn read_flag(r: &mut impl Read) -> io::Result<bool> {
+    Ok(bytes::<1>(r)? != [0])
+}
+
+fn read_text(r: &mut impl Read) -> io::Result<String> {
+    let len = usize::try_from(read_u64(r)?)
+        .map_err(|_| io::Error::new(io::ErrorKind::InvalidData, "spool: a text too long"))?;
+    let mut v = vec![0; len];
+    r.read_exact(&mut v)?;
+    String::from_utf8(v).map_err(|e| io::Error::new(io::ErrorKind::InvalidData, e))
+}
+
+fn read_analysis(r: &mut impl Read) -> io::Result<Analysis> {
+    let name = read_text(r)?;
+    let regime = read_text(r)?;
+    let tier = read_text(r)?;
+    let [bounce, upper, expected_error, window] = [
+        read_number(r)?,
+        read_number(r)?,
+        read_number(r)?,
+        read_number(r)?,
+    ];
+    let impacts = if read_flag(r)? {
+        Some(read_number(r)?)
+    } else {
+        None
+    };
+    let ticks = u32::from_le_bytes(bytes(r)?);
+    let monte_carlo = if read_flag(r)? {
+        let samples = read_u64(r)?;
+        let exact = read_u64(r)?;
+        Some(MonteCarlo {
+            samples,
+            exact,
+            p50: read_number(r)?,
+            window: read_number(r)?,
+            max: read_number(r)?,
+        })
+    } else {
+        None
+    };
+    let n = read_u64(r)?;
+    let mut sensitivity = Vec::new();
+    for _ in 0..n {
+        sensitivity.push(Sensitivity {
+            parameter: read_text(r)?,
+            elasticity: read_number(r)?,
+            contribution: read_number(r)?,
+        });
+    }
+    Ok(Analysis {
+        name,
+        nominal: Estimate {
+            bounce,
+            upper,
+            regime,
+            impacts,
+            tier,
+            expected_error,
+        },
+        window,
+        ticks,
+        monte_carlo,
+        sensitivity,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn analysis(name: &str, with_spread: bool) -> Analysis {
+        Analysis {
+            name: name.to_owned(),
+            nominal: Estimate {
+                bounce: 1.5e-4,
+                upper: f64::INFINITY,
+                regime: "zeno_accumulation".to_owned(),
+                impacts: with_spread.then_some(13.0),
+                tier: "map".to_owned(),
+                expected_error: 0.004,
+            },
+            window: -0.0,
+            ticks: u32::MAX,
+            monte_carlo: with_spread.then_some(MonteCarlo {
+                samples: 10_000,
+                p50: 1e-4,
+                window: 2e-4,
+                max: f64::NAN,
+                exact: 7,
+            }),
+            sensitivity: if with_spread {
+                vec![Sensitivity {
+                    parameter: "kernel.tau".to_owned(),
+                    elasticity: -0.5,
+                    contribution: 0.25,
+                }]
+            } else {
+                Vec::new()
+            },
+        }
+    }
+
+    #[test]
+    fn every_field_reads_back_bit_for_bit_and_twice() {
+        let rows = [
+            analysis("a\nswitch \u{0}with a \"name\"", true),
+            analysis("", false),
+        ];
+        let mut spool = Spool::new().expect("spool");
+        for a in &rows {
+            spool.push(a).expect("push");
+        }
+        assert_eq!(spool.len(), 2);
+        for _ in 0..2 {
+            let back: Vec<Analysis> = spool
+                .rows()
+                .expect("rows")
+                .map(|r| r.expect("row"))
+                .collect();
+            assert_eq!(back.len(), 2);
+            for (b, a) in back.iter().zip(&rows) {
+                // NaN != NaN: compare the debug form, which shows every field.
+                assert_eq!(format!("{b:?}"), format!("{a:?}"));
+                assert_eq!(b.window.to_bits(), a.window.to_bits());
+            }
+        }
+    }
+}
