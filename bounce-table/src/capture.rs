@@ -74,12 +74,15 @@ pub struct CaptureError {
     pub reason: String,
 }
 
+/// One line: control characters from the file are shown escaped.
 impl fmt::Display for CaptureError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        use crate::strict::printable;
+        let (file, reason) = (printable(&self.file), printable(&self.reason));
         if self.line == 0 {
-            write!(f, "{}: {}", self.file, self.reason)
+            write!(f, "{file}: {reason}")
         } else {
-            write!(f, "{}:{}: {}", self.file, self.line, self.reason)
+            write!(f, "{file}:{}: {reason}", self.line)
         }
     }
 }

@@ -68,6 +68,11 @@ pub struct Options {
 /// # Errors
 /// A message naming the bad option.
 pub fn options(args: &[String]) -> Result<Options, String> {
+    // Arguments echoed in a message have their control characters escaped: one line.
+    options_unescaped(args).map_err(|m| crate::strict::printable(&m).into_owned())
+}
+
+fn options_unescaped(args: &[String]) -> Result<Options, String> {
     let mut out = Options {
         method: Method::Auto,
         tolerance: 0.01,

@@ -8,10 +8,10 @@
 
 use std::process::ExitCode;
 
-use bounce_table::analysis::Settings;
-
-use bounce_table::output::{clash, identifier, render_to, Format};
+use bounce_table::cli::parse;
+use bounce_table::output::{clash, identifier, render_to};
 use bounce_table::scenes::{catalogue, open, Entries};
+use bounce_table::strict::printable;
 use bounce_table::{calibrate, eval, plot, replay, scene_input::SceneInput, table};
 
 /// Writes to standard output. A reader that stopped early (`bounce-table ... | head`) ends the
@@ -68,7 +68,7 @@ Options (every subcommand also takes -h/--help, -V/--version, and --option=value
   --margin F           safety factor on every window, at least 1 (1: none; 1.5 for +50 %)
   --samples N          Monte Carlo samples (4000)
   --seed S             Monte Carlo seed (1)
-  --threads N          worker threads (all cores)
+  --threads N          worker threads (all cores; at most 1024)
   --plot DIR           also write NAME-envelope.svg and NAME-motion.svg for each switch
 
 replay: the benchmark of debouncers on a real capture. Per switch and kind, the earlier tests
@@ -104,89 +104,6 @@ empirical quantiles on held-out halves, and recommends windows. High = open unle
   --contact-models     also fit the two-body and compliant-contact models to each switch's
                        presses and check them on held-out halves (about a minute)
   --plot DIR           also write SWITCH-KIND.svg: observed bounce distribution vs the models";
-
-struct Options {
-    settings: Settings,
-    format: Format,
-    output: Option<String>,
-    plot: Option<String>,
-    file: Option<String>,
-}
-
-fn positive(name: &str, value: &str) -> Result<f64, String> {
-    value
-        .parse::<f64>()
-        .ok()
-        .filter(|x| x.is_finite() && *x > 0.0)
-        .ok_or(format!("{name}: '{value}' is not a positive number"))
-}
-
-fn parse(args: &[String]) -> Result<Options, String> {
-    let mut o = Options {
-        settings: Settings::default(),
-        format: Format::Table,
-        output: None,
-        plot: None,
-        file: None,
-    };
-    o.settings.progress = std::io::IsTerminal::is_terminal(&std::io::stderr());
-    let mut it = args.iter();
-    while let Some(arg) = it.next() {
-        let mut value = |name: &str| it.next().cloned().ok_or(format!("{name} needs a value"));
-        match arg.as_str() {
-            "--period" | "--sample-period" => {
-                o.settings.period = positive("--period", &value("--period")?)?
-            }
-            "--tolerance" => {
-                o.settings.tolerance = positive("--tolerance", &value("--tolerance")?)?
-            }
-            "--margin" => {
-                let m = positive("--margin", &value("--margin")?)?;
-                if m < 1.0 {
-                    return Err(format!(
-                        "--margin: {m} is below 1 (a factor the window is multiplied by)"
-                    ));
-                }
-                o.settings.margin = m;
-            }
-            "--percentile" => {
-                let p = positive("--percentile", &value("--percentile")?)?;
-                if p > 100.0 {
-                    return Err(format!("--percentile: {p} is above 100"));
-                }
-                o.settings.percentile = p;
-            }
-            "--samples" | "--seed" | "--threads" => {
-                let v = value(arg)?;
-                let n = v
-                    .parse::<u64>()
-                    .ok()
-                    .filter(|n| *n > 0 || arg == "--seed")
-                    .ok_or(format!("{arg}: '{v}' is not a whole number above 0"))?;
-                match arg.as_str() {
-                    "--samples" => o.settings.samples = n,
-                    "--seed" => o.settings.seed = n,
-                    _ => o.settings.threads = usize::try_from(n).unwrap_or(1),
-                }
-            }
-            "--format" => {
-                let v = value("--format")?;
-                o.format = Format::parse(&v).ok_or(format!(
-                    "--format: '{v}' is not table, markdown, csv, json, c or rust"
-                ))?;
-            }
-            "--output" => o.output = Some(value("--output")?),
-            "--plot" => o.plot = Some(value("--plot")?),
-            other if other.starts_with('-') => return Err(format!("unknown option '{other}'")),
-            file => {
-                if o.file.replace(file.to_owned()).is_some() {
-                    return Err("give one scene file".to_owned());
-                }
-            }
-        }
-    }
-    Ok(o)
-}
 
 /// Writes `text` to `path` completely or not at all (a temporary file, then a rename).
 fn write_atomically(path: &str, text: &str) -> std::io::Result<()> {
@@ -369,8 +286,10 @@ fn main() -> ExitCode {
                         .collect();
                     if let Some((a, b, id)) = clash(names.iter().map(String::as_str)) {
                         eprintln!(
-                            "bounce-table calibrate: {}: '{a}' and '{b}' both become {id} in generated code: rename a switch",
-                            options.file
+                            "bounce-table calibrate: {}: '{}' and '{}' both become {id} in generated code: rename a switch",
+                            printable(&options.file),
+                            printable(&a),
+                            printable(&b)
                         );
                         return ExitCode::from(2);
                     }
@@ -458,7 +377,7 @@ fn main() -> ExitCode {
         &options.settings,
         options.format,
         &source,
-        &mut |message| eprintln!("bounce-table: {message}"),
+        &mut |message| eprintln!("bounce-table: {}", printable(&message)),
     ) else {
         // Nothing is written when any switch failed.
         return ExitCode::from(2);
@@ -541,7 +460,9 @@ fn main() -> ExitCode {
                 }
                 Err(e) => eprintln!(
                     "bounce-table: {}: plot: {}: {}",
-                    entry.name, e.field, e.message
+                    printable(&entry.name),
+                    e.field,
+                    e.message
                 ),
             }
         }

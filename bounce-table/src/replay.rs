@@ -974,6 +974,11 @@ pub struct Request {
 /// # Errors
 /// An unknown option, a missing or bad value (named), no capture file.
 pub fn options(args: &[String]) -> Result<Request, String> {
+    // Arguments echoed in a message have their control characters escaped: one line.
+    options_unescaped(args).map_err(|m| crate::strict::printable(&m).into_owned())
+}
+
+fn options_unescaped(args: &[String]) -> Result<Request, String> {
     let mut settings = Settings {
         period: 1e-3,
         split: 0.5,

@@ -131,6 +131,26 @@ fn underflow(text: &str) -> Option<(usize, String)> {
     None
 }
 
+/// `text` with its control characters escaped (`\n`, `\u{1b}`): a name or key from a file,
+/// echoed in a one-line message, can neither break the line nor drive the terminal.
+#[must_use]
+pub fn printable(text: &str) -> std::borrow::Cow<'_, str> {
+    if text.chars().any(char::is_control) {
+        text.chars()
+            .map(|c| {
+                if c.is_control() {
+                    c.escape_default().to_string()
+                } else {
+                    c.to_string()
+                }
+            })
+            .collect::<String>()
+            .into()
+    } else {
+        text.into()
+    }
+}
+
 /// Parses JSON strictly (see the module docs).
 ///
 /// # Errors

@@ -387,6 +387,49 @@ fn a_long_scene_file_is_streamed_in_bounded_memory() {
     assert!(peak_kb < 50_000, "peak resident set {peak_kb} kB");
 }
 
+#[test]
+fn a_key_or_name_with_a_control_character_is_reported_on_one_line() {
+    // Found by the parser harness: a key "restituti\n" was echoed raw, breaking the message
+    // over two lines (and an escape sequence would have reached the terminal).
+    let path = tmp("control.jsonl");
+    std::fs::write(
+        &path,
+        "{\"name\": \"a\\nb\\u001b[31m\", \"omega\": 1000, \"gap\": -0.001, \"restituti\\n\": 0.5, \"closing_speed\": 0.2}\n",
+    )
+    .expect("write");
+    let out = run(&[path.to_str().expect("utf8")]);
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(
+        stderr.contains("a\\nb\\u{1b}[31m") && stderr.contains("restituti\\n"),
+        "{stderr}"
+    );
+    assert!(!stderr.contains('\u{1b}'), "{stderr}");
+    let out = run(&["--period", "1e-3\n2"]);
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr
+            .lines()
+            .next()
+            .is_some_and(|l| l.contains("1e-3\\n2")),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn more_threads_than_a_run_can_use_are_refused() {
+    // --threads 1e9 with --samples 1e9 asked for a billion threads (and a job list of that
+    // length when the system refused them).
+    let out = run(&["--threads", "1000000000"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("above 1024"));
+    assert!(run(&["--threads", "1024", "--samples", "100"])
+        .status
+        .success());
+}
+
 /// A JSON scene file of switches with these names (the tactile dome's parameters).
 fn named(file: &str, names: &[&str]) -> std::path::PathBuf {
     let switches: Vec<serde_json::Value> = names

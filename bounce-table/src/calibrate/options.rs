@@ -59,6 +59,11 @@ fn seconds(name: &str, v: &str) -> Result<f64, String> {
 /// # Errors
 /// An unknown option, a missing or bad value, no file or two files.
 pub fn options(args: &[String]) -> Result<Options, String> {
+    // Arguments echoed in a message have their control characters escaped: one line.
+    options_unescaped(args).map_err(|m| crate::strict::printable(&m).into_owned())
+}
+
+fn options_unescaped(args: &[String]) -> Result<Options, String> {
     let mut file: Option<String> = None;
     let mut format = None;
     let mut resolution = 3e-6;
