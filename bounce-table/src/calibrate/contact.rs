@@ -423,8 +423,16 @@ pub fn report(groups: &super::Groups, seed: u64) -> String {
             "| {switch} | {split} | fitted bounce model | {parts} | - | {} |\n",
             three(VALIDATION_QUANTILES.map(|q| ratio(model.quantile(q), at(&observed, q))))
         ));
+        // Clean as the fitted bounce model counts it: a bounce shorter than the resolution is
+        // the instrument's sampling, fitted with the clean events, not a contact's to match.
         #[allow(clippy::cast_precision_loss)]
-        let clean = fit.iter().filter(|x| x.bounce <= 0.0).count() as f64 / fit.len() as f64;
+        let clean =
+            fit.iter().filter(|x| !super::fit::bounces(x)).count() as f64 / fit.len() as f64;
+        let bouncing: Vec<f64> = fit
+            .iter()
+            .filter(|x| super::fit::bounces(x))
+            .map(|x| x.bounce)
+            .collect();
         // The share of the bouncing presses that reopen, as the fitted bounce model sorts them.
         let reopening = if model.clean < 1.0 {
             model.reopened / (1.0 - model.clean)
@@ -435,7 +443,7 @@ pub fn report(groups: &super::Groups, seed: u64) -> String {
         let fits = crate::workers::each(kinds.len(), &|i| {
             kinds
                 .get(i)
-                .and_then(|&k| ContactFit::fit(k, &train, reopening, seed))
+                .and_then(|&k| ContactFit::fit(k, &bouncing, reopening, seed))
         });
         for (k, c) in kinds.into_iter().zip(fits.into_iter().map(Option::flatten)) {
             match c {
