@@ -1,6 +1,6 @@
 //! What each tier costs on a Cortex-M: `scripts/cost-report.sh` runs this under QEMU with an
 //! instruction trace and counts the instructions between calls of `cost_mark`. The tactile dome
-//! of physics.md sec. 7 in f32, each tier once; then 1000 debouncer samples, ours and
+//! of docs/physics.md sec. 7 in f32, each tier once; then 1000 debouncer samples, ours and
 //! debouncr's (its 16-sample debouncer), on the same pseudo-random input. On the host it does
 //! nothing.
 #![cfg_attr(target_os = "none", no_std, no_main)]

@@ -1,4 +1,4 @@
-//! Predicts debounce windows for four switches of physics.md sec. 7 at run time (f32; map,
+//! Predicts debounce windows for four switches of docs/physics.md sec. 7 at run time (f32; map,
 //! averaged and Auto tiers) and one at compile time (the `const fn`), and prints them.
 //!
 //! Runs on the host (`cargo run --example predict`) and under QEMU for thumbv6m, thumbv7m and

@@ -1,4 +1,4 @@
-//! Flash cost of one tier (exact) in a firmware: the tactile dome of physics.md sec. 7
+//! Flash cost of one tier (exact) in a firmware: the tactile dome of docs/physics.md sec. 7
 //! (viscous, f32). Built by `scripts/size-report.sh` and `scripts/cost-report.sh` for
 //! thumbv6m and thumbv7em; on the host it is an empty program.
 #![cfg_attr(target_os = "none", no_std, no_main)]

@@ -17,7 +17,7 @@ mod firmware {
 
     #[cortex_m_rt::entry]
     fn main() -> ! {
-        // The tactile dome of physics.md sec. 7, opaque to the optimiser.
+        // The tactile dome of docs/physics.md sec. 7, opaque to the optimiser.
         let contact = Contact {
             frequency: Frequency::MassStiffness {
                 mass: black_box(5e-5_f32),

@@ -1,5 +1,5 @@
 //! Predictions on an Arduino Uno (ATmega328P), printed over the UART: the map tier for two
-//! switches of physics.md sec. 7 and a compile-time window (`common/uno_report.rs`).
+//! switches of docs/physics.md sec. 7 and a compile-time window (`common/uno_report.rs`).
 //!
 //! Build with the nightly toolchain for `avr-none` (`scripts/uno.sh` does it and runs it in
 //! simavr); on the host it prints the same lines, which is what CI compares.

@@ -1,6 +1,6 @@
 //! What the model costs on the Arduino Uno: `scripts/cost-report.sh` runs this in libsimavr
 //! and counts the exact cycles between calls of `cost_mark` (tools/simavr-cycles.c): the
-//! tactile dome of physics.md sec. 7 in f32, walked with `MapImpacts`, and the debouncers. On
+//! tactile dome of docs/physics.md sec. 7 in f32, walked with `MapImpacts`, and the debouncers. On
 //! the host it does nothing.
 #![cfg_attr(target_arch = "avr", no_std, no_main, feature(asm_experimental_arch))]
 

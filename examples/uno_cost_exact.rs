@@ -1,6 +1,6 @@
 //! Does the exact tier fit the Arduino Uno? `scripts/cost-report.sh` builds this for the Uno and
 //! reports how much flash it needs (the linker says by how much it overflows the 32 KB); in
-//! f32, for the tactile dome of physics.md sec. 7, between calls of `cost_mark`. On the host it
+//! f32, for the tactile dome of docs/physics.md sec. 7, between calls of `cost_mark`. On the host it
 //! does nothing.
 #![cfg_attr(target_arch = "avr", no_std, no_main, feature(asm_experimental_arch))]
 

@@ -1,13 +1,14 @@
 #!/usr/bin/env python3
 """Regenerate src/accuracy/zeno_table.rs: the averaged tier's error on an undamped preload.
 
-For zeta = 0 both sides are known exactly (physics.md sec. 3 and 5): the averaged accumulation
+For zeta = 0 both sides are known exactly (docs/physics.md sec. 3 and 5): the averaged accumulation
 time is (2 / (r Omega)) Ti2(j0/2) and the exact one (2/Omega) sum_n atan((j0/2) R^n), so their
 ratio depends on R and j0 only. This table is that ratio minus 1 on a grid, rounded up to three
 digits; the core reads it conservatively (the next smaller R and the next larger j0).
 
-physics.md sec. 6 says "within 1 % for j0 <= 1 for every R in [0.05, 0.999]": this computation
-shows +4.7 % at R = 0.05, j0 = 1 (and +126 % at R = 0.05, j0 = 100, not +74 %).
+Simulation had suggested "within 1 % for j0 <= 1 for every R in [0.05, 0.999]": this computation
+shows +4.7 % at R = 0.05, j0 = 1 (and +126 % at R = 0.05, j0 = 100, not +74 %); docs/physics.md
+sec. 6 states the computed figures.
 
 Usage: python3 scripts/averaged_error_table.py > src/accuracy/zeno_table.rs
 """

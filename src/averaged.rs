@@ -1,10 +1,10 @@
-//! The averaged model J' = E1(J): physics.md sec. 3.
+//! The averaged model J' = E1(J): docs/physics.md sec. 3.
 //!
 //! Started from J_B = 2 R v0 (the first flight's generating impulse), the bounce time and the
 //! impact count are t = integral dJ / |E1|, n = 1 + integral dJ / (|E1| T), computed in s = ln J
 //! (smooth, bounded integrands) by composite Gauss-Legendre, panels at most 0.5 wide, with
 //! [`Nodes`] points each. Below J = [`Float::TAIL_CUTOFF`] Omega |Delta| the small-impulse
-//! asymptote of E1 (physics.md sec. 4) is integrated in closed form: its relative error there
+//! asymptote of E1 (docs/physics.md sec. 4) is integrated in closed form: its relative error there
 //! is O(cutoff), on a tail that is itself O(cutoff) of the total.
 
 use crate::closed::{asymptotic_count, asymptotic_time, by_regime};
@@ -264,7 +264,7 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
         (Time::At(time), Count::Finite(impacts), capped)
     }
 
-    /// The averaged prediction (physics.md sec. 3). Expected error: physics.md sec. 6 (preload
+    /// The averaged prediction (docs/physics.md sec. 3). Expected error: docs/physics.md sec. 6 (preload
     /// within 1 % for j0 <= 1; gap end -4 % to +99 % with few impacts; thresholds ~ r/2).
     #[must_use]
     pub fn predict(&self) -> Prediction<F> {

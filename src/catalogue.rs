@@ -1,4 +1,4 @@
-//! Typical switches: the orders of magnitude of physics.md sec. 7.
+//! Typical switches: the orders of magnitude of docs/physics.md sec. 7.
 //!
 //! **Assumed, typical values, not datasheet values**: use them to see what the model says of
 //! a kind of switch, and measure your own (closing speed, preload force, resonance, R) before
@@ -142,7 +142,7 @@ pub const LARGE_CONTACTOR: Typical = Typical {
     damping_ratio: 0.05,
 };
 
-/// The eight switches of physics.md sec. 7, fastest first.
+/// The eight switches of docs/physics.md sec. 7, fastest first.
 pub const ALL: [Typical; 8] = [
     MEMS,
     REED,

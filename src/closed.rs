@@ -1,6 +1,6 @@
-//! Closed forms: physics.md sec. 5, with the exact zeta = 0 sums.
+//! Closed forms: docs/physics.md sec. 5, with the exact zeta = 0 sums.
 //!
-//! Every form returns an [`Estimate`]: the time and the relative error physics.md sec. 6 leads
+//! Every form returns an [`Estimate`]: the time and the relative error docs/physics.md sec. 6 leads
 //! one to expect on this scene (`None` outside every stated validity), so a caller knows when
 //! to trust it. A form that does not apply to the scene's regime returns `None`.
 
@@ -21,7 +21,7 @@ use crate::{accuracy, Float, Scene};
 pub struct Estimate<F> {
     /// The time (s).
     pub time: F,
-    /// Expected relative error (physics.md sec. 5-6), `None` when outside the stated validity.
+    /// Expected relative error (docs/physics.md sec. 5-6), `None` when outside the stated validity.
     pub expected_error: Option<F>,
 }
 
@@ -339,7 +339,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         (self.delta() < F::ZERO).then(|| self.omega() * self.delta().abs())
     }
 
-    /// t_b1 = J_B / (r Omega^2 |Delta|) (physics.md sec. 5): preload, R < 1, restitution only.
+    /// t_b1 = J_B / (r Omega^2 |Delta|) (docs/physics.md sec. 5): preload, R < 1, restitution only.
     /// Exact as J_B -> 0; the error of linearising atan is 1 % at j0 = 0.61, 10 % at 2.1, 50 % at
     /// 6.4 (expected error given up to j0 = 6.4). `None` unless preload with R < 1.
     ///
@@ -367,7 +367,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
             .and_then(Estimate::in_range)
     }
 
-    /// t_b1v = (3 / (2 zeta Omega)) ln(1 + 2 zeta J_B / (3 r Omega |Delta|)) (physics.md sec. 5):
+    /// t_b1v = (3 / (2 zeta Omega)) ln(1 + 2 zeta J_B / (3 r Omega |Delta|)) (docs/physics.md sec. 5):
     /// preload, R < 1, viscous. Within 2.5 % for j0 <= 1, R in [0.05, 0.999], zeta <= 0.5.
     /// Equals t_b1 at zeta = 0. `None` unless preload with R < 1.
     #[must_use]
@@ -393,7 +393,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         })
     }
 
-    /// t_b2 = J_B^2 / (8 zeta Omega^3 Delta^2) (physics.md sec. 5): gap, viscous, R = 1.
+    /// t_b2 = J_B^2 / (8 zeta Omega^3 Delta^2) (docs/physics.md sec. 5): gap, viscous, R = 1.
     /// Rarely within 10 %: needs J_B << 0.3 Omega |Delta| and many impacts (10 % given for
     /// j0 <= 0.03). `None` unless a gap with zeta > 0.
     #[must_use]
@@ -416,7 +416,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         })
     }
 
-    /// t_b2r = (pi / (r Omega)) ln(1 + r J_B^2 / (8 pi zeta Omega^2 Delta^2)) (physics.md
+    /// t_b2r = (pi / (r Omega)) ln(1 + r J_B^2 / (8 pi zeta Omega^2 Delta^2)) (docs/physics.md
     /// sec. 5): gap, restitution and viscous. Equals t_b2 as r -> 0. `None` unless a gap with
     /// zeta > 0.
     #[must_use]
@@ -435,7 +435,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         })
     }
 
-    /// Delta = 0 (physics.md sec. 5): t = ln(J_B / J_end) / ((r/pi + zeta) Omega), the averaged
+    /// Delta = 0 (docs/physics.md sec. 5): t = ln(J_B / J_end) / ((r/pi + zeta) Omega), the averaged
     /// exponential to the threshold. Off by about r/2 against the discrete impacts (sec. 6);
     /// the closed tier uses the exact discrete form instead. `None` unless Delta = 0 with a
     /// threshold and some loss.
@@ -456,7 +456,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
             .and_then(Estimate::in_range)
     }
 
-    /// The exact accumulation time of an undamped preload (physics.md sec. 5):
+    /// The exact accumulation time of an undamped preload (docs/physics.md sec. 5):
     /// sum_{n>=0} (2/Omega) atan(R^{n+1} v0 / (Omega |Delta|)), summed directly or by
     /// Euler-Maclaurin (see [`Scene::undamped_flights_until`]). Its bouncing-ball limit is
     /// t_b1. `None` unless preload with R < 1 (its value ignores any damping).

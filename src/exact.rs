@@ -1,5 +1,5 @@
 //! The exact tier: one body against a stop with restitution and viscous damping, solved impact
-//! by impact (physics.md sec. 1), with nothing approximated but the rounding of the float.
+//! by impact (docs/physics.md sec. 1), with nothing approximated but the rounding of the float.
 //!
 //! Between impacts x'' + 2 zeta Omega x' + Omega^2 x = 0 is solved in closed form (under-,
 //! critically and over-damped). The next impact is the root of y = x - Delta in the bracket

@@ -1,4 +1,4 @@
-//! The semi-discrete map: physics.md sec. 6.
+//! The semi-discrete map: docs/physics.md sec. 6.
 //!
 //! Per impact: exact restitution (v -> R v), the conservative flight time T(2a) of a flight
 //! leaving at a, and the first-order loss of the other mechanisms over that flight

@@ -33,7 +33,7 @@ impl<F: Float> Tolerance<F> {
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[non_exhaustive]
 pub enum Method<F> {
-    /// Closed forms (physics.md sec. 5): exact sums where they exist, else t_b1v / t_b2r.
+    /// Closed forms (docs/physics.md sec. 5): exact sums where they exist, else t_b1v / t_b2r.
     Closed,
     /// The averaged model with this many Gauss-Legendre nodes per panel.
     Averaged(Nodes),
@@ -53,7 +53,7 @@ pub enum Method<F> {
         /// default).
         max_impacts: u32,
     },
-    /// The cheapest tier whose expected error (physics.md sec. 6) is within the tolerance:
+    /// The cheapest tier whose expected error (docs/physics.md sec. 6) is within the tolerance:
     /// closed, then the map or the averaged model by their cost, then the exact tier, which
     /// promises the float's rounding on every one-body scene without a kernel. Where nothing
     /// does (a kernel; f32 over very many impacts; a return decided by rounding) the smallest

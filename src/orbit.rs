@@ -1,8 +1,8 @@
-//! The generating (conservative) orbit: physics.md sec. 2 (the paper's Eq. 3, with its errata).
+//! The generating (conservative) orbit: docs/physics.md sec. 2 (the paper's Eq. 3, with its errata).
 //!
 //! Between impacts the contact moves on the undamped orbit of period T(J), where J is the
 //! generating impulse: twice the impact speed. Everything here is in the stable forms of
-//! physics.md sec. 2: sin(theta) = J/h and cos(theta) = -2 Omega Delta / h with
+//! docs/physics.md sec. 2: sin(theta) = J/h and cos(theta) = -2 Omega Delta / h with
 //! h = hypot(J, 2 Omega Delta); for a gap, pi - theta = atan2(J, 2 Omega Delta) is computed
 //! directly, never as a difference.
 
@@ -90,7 +90,7 @@ impl<F: Float> Orbit<F> {
         }
     }
 
-    /// The generating orbit's position x(t) = -J chi(t) (physics.md sec. 2), for any t >= 0
+    /// The generating orbit's position x(t) = -J chi(t) (docs/physics.md sec. 2), for any t >= 0
     /// (T-periodic): x(t) = -(h / (2 Omega)) cos(Omega t' - theta), t' = t mod T in (0, T]
     /// (the argument stays in [-theta, theta], so the series of [`Float::cos_within_pi`] serves).
     #[must_use]

@@ -45,7 +45,7 @@ impl<F: Float> Count<F> {
     }
 }
 
-/// A closed form of physics.md sec. 5.
+/// A closed form of docs/physics.md sec. 5.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[non_exhaustive]
@@ -73,11 +73,11 @@ pub enum ClosedForm {
 pub enum Tier {
     /// No model was needed: the regime alone answers (single impact, periodic).
     Regime,
-    /// A closed form (physics.md sec. 5).
+    /// A closed form (docs/physics.md sec. 5).
     Closed(ClosedForm),
     /// The averaged model J' = E1(J), Gauss-Legendre with this many nodes per panel.
     Averaged(crate::Nodes),
-    /// The semi-discrete map (physics.md sec. 6).
+    /// The semi-discrete map (docs/physics.md sec. 6).
     Map,
     /// The exact event-driven solution (flights in closed form, returns solved to rounding).
     Exact,
@@ -93,7 +93,7 @@ impl Approximations {
     pub const NONE: Self = Self(0);
     /// Two bodies with unequal partial frequencies, reduced at the Rayleigh frequency.
     pub const TWO_BODY_RAYLEIGH: Self = Self(1);
-    /// A closed form or tier used outside the validity physics.md sec. 6 states for it:
+    /// A closed form or tier used outside the validity docs/physics.md sec. 6 states for it:
     /// `expected_error` is then `None`.
     pub const OUTSIDE_VALIDITY: Self = Self(1 << 1);
     /// An iterating tier (the map, the exact tier) reached its cap on impacts and the
@@ -154,7 +154,7 @@ pub struct Prediction<F> {
     pub tier: Tier,
     /// What was approximated.
     pub approximations: Approximations,
-    /// The relative error physics.md sec. 6 leads one to expect of the bounce time (the end
+    /// The relative error docs/physics.md sec. 6 leads one to expect of the bounce time (the end
     /// time when finite, else the last-above time) for this tier on this scene; `None` when
     /// the scene is outside every stated validity.
     pub expected_error: Option<F>,

@@ -1,6 +1,6 @@
-//! Regimes of repeated collisions: physics.md sec. 4 (verified by simulation).
+//! Regimes of repeated collisions: docs/physics.md sec. 4 (verified by simulation).
 
-/// How a bounce ends (physics.md sec. 4).
+/// How a bounce ends (docs/physics.md sec. 4).
 ///
 /// | regime | when | impacts | end |
 /// |---|---|---|---|
@@ -33,7 +33,7 @@ impl Regime {
         matches!(self, Self::Endless | Self::Periodic)
     }
 
-    /// The regime of a contact (physics.md sec. 4).
+    /// The regime of a contact (docs/physics.md sec. 4).
     ///
     /// `delta_sign`: the sign of Delta (-1, 0, 1); `lossless_impacts`: R = 1;
     /// `zeta`: viscous ratio; `dissipates`: any loss between impacts.

@@ -1,4 +1,4 @@
-//! The description of one contact event, validated once: physics.md sec. 1.
+//! The description of one contact event, validated once: docs/physics.md sec. 1.
 
 use crate::error::{derived, finite, non_negative, physical, Error, Parameter, Reason};
 use crate::mechanisms::{
@@ -60,7 +60,7 @@ pub enum Threshold<F> {
 ///
 /// ```
 /// use contact_bounce::{Contact, Frequency, Offset, Restitution, Scene, Threshold, Undamped};
-/// // The tactile dome of physics.md sec. 7 without its damping: m = 5e-5 kg, c = 5000 N/m,
+/// // The tactile dome of docs/physics.md sec. 7 without its damping: m = 5e-5 kg, c = 5000 N/m,
 /// // pressed by 1 N, closing at 0.5 m/s, R = 0.7.
 /// let contact = Contact {
 ///     frequency: Frequency::MassStiffness { mass: 5e-5_f32, stiffness: 5000.0 },
@@ -107,7 +107,7 @@ pub struct TwoBody<F> {
     pub d2: F,
 }
 
-/// The one-body model of a [`TwoBody`] (physics.md sec. 1).
+/// The one-body model of a [`TwoBody`] (docs/physics.md sec. 1).
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Reduction<F> {
@@ -209,7 +209,7 @@ impl<F: Float> TwoBody<F> {
     /// Reduces to the relative coordinate: exactly when the partial frequencies and damping
     /// rates match, otherwise at the Rayleigh frequency
     /// Omega_rel^2 = (c1 m2/m1 + c2 m1/m2) / (m1 + m2) (and the same weighting of d/m),
-    /// flagged as approximate (physics.md sec. 1: ~1 % at a 10 % frequency mismatch for a
+    /// flagged as approximate (docs/physics.md sec. 1: ~1 % at a 10 % frequency mismatch for a
     /// preload, much worse for a gap).
     ///
     /// # Errors
@@ -518,7 +518,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
     pub const fn dissipation(&self) -> &D {
         &self.dissipation
     }
-    /// The regime (physics.md sec. 4).
+    /// The regime (docs/physics.md sec. 4).
     #[must_use]
     pub const fn regime(&self) -> Regime {
         self.regime
@@ -539,12 +539,12 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         self.threshold
     }
     /// The averaged model's start, the first flight's generating impulse J_B = 2 R v0 (m/s)
-    /// (physics.md sec. 3: not the physical (1 + R) v0).
+    /// (docs/physics.md sec. 3: not the physical (1 + R) v0).
     #[must_use]
     pub fn start_impulse(&self) -> F {
         F::TWO * self.restitution * self.closing_speed
     }
-    /// The threshold on the generating impulse, J_end = P_end 2R / (1 + R) (physics.md sec. 3).
+    /// The threshold on the generating impulse, J_end = P_end 2R / (1 + R) (docs/physics.md sec. 3).
     #[must_use]
     pub fn threshold_generating(&self) -> Option<F> {
         self.threshold
@@ -557,7 +557,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         (scale > F::ZERO).then(|| self.start_impulse() / scale)
     }
     /// The averaged rate E1(J) (m/s^2, < 0 where the scene dissipates): restitution plus the
-    /// scene's mechanisms (physics.md sec. 3).
+    /// scene's mechanisms (docs/physics.md sec. 3).
     #[must_use]
     pub fn rate(&self, impulse: F) -> F {
         self.rate_at(&self.orbit.at(impulse))
@@ -573,7 +573,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
     pub fn impulse_floor(&self) -> F {
         impulse_floor(&self.orbit)
     }
-    /// The small-impulse asymptote of -E1 (physics.md sec. 4).
+    /// The small-impulse asymptote of -E1 (docs/physics.md sec. 4).
     #[must_use]
     pub const fn asymptote(&self) -> &Asymptote<F> {
         &self.asymptote

@@ -160,7 +160,7 @@ pub struct LeadingOrder {
 ///
 /// ```
 /// use contact_bounce::preload_bounce_time;
-/// // The tactile dome of physics.md sec. 7: 2 * 0.7 * 0.5 * 5e-5 / (0.3 * 1.0) s.
+/// // The tactile dome of docs/physics.md sec. 7: 2 * 0.7 * 0.5 * 5e-5 / (0.3 * 1.0) s.
 /// const DOME: f64 = match preload_bounce_time(5e-5, 5000.0, 1.0, 0.5, 0.7) {
 ///     Ok(t) => t.seconds,
 ///     Err(_) => panic!("bad switch parameters"),

@@ -1,5 +1,5 @@
 // The skeleton of the per-tier cost firmware (`examples/tier_*.rs`): the tactile dome of
-// physics.md sec. 7 in f32, its inputs hidden from the optimiser; `cost_mark(0)`, the scene
+// docs/physics.md sec. 7 in f32, its inputs hidden from the optimiser; `cost_mark(0)`, the scene
 // validated, `cost_mark(1)`, the example's `work` (one tier, named as a constant, so only that
 // tier is linked), `cost_mark(2)`, its result stored to a volatile. `scripts/cost-report.sh`
 // counts instructions (QEMU) or cycles (simavr) between the marks, and takes the crate's share

@@ -1,6 +1,6 @@
 //! The cost side of the speed/accuracy trade on the host: time per prediction of every tier
 //! (f64 and f32) and of the exact reference, on representative scenes of the committed grid
-//! (one per regime family, and switches of physics.md sec. 7). Medians, by criterion; read by
+//! (one per regime family, and switches of docs/physics.md sec. 7). Medians, by criterion; read by
 //! `scripts/trade-report.py` from target/criterion.
 //!
 //! A benchmark, not a test: CI only builds it and runs each case once (`-- --test`).

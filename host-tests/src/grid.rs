@@ -1,5 +1,5 @@
 //! The grid of scenes the core is checked on against the reference: every regime of
-//! physics.md sec. 4 and the switches of sec. 7 (j0, R, zeta and the sign of Delta varied).
+//! docs/physics.md sec. 4 and the switches of sec. 7 (j0, R, zeta and the sign of Delta varied).
 
 use contact_bounce::{Contact, Float, Frequency, Offset, Restitution, Scene, Threshold, Viscous};
 

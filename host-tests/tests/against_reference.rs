@@ -1,7 +1,7 @@
 //! Every tier of the core against the exact reference, on the grid of `host_tests::grid`
-//! (every regime of physics.md sec. 4 and the switches of sec. 7) and on scenes off it: the
+//! (every regime of docs/physics.md sec. 4 and the switches of sec. 7) and on scenes off it: the
 //! regime agrees, and wherever a tier states an expected error, the measured error is within
-//! it. The expected errors are physics.md sec. 6, corrected where the reference showed them
+//! it. The expected errors are docs/physics.md sec. 6, corrected where the reference showed them
 //! wrong (see src/accuracy and docs/error-table.md); none is widened here.
 
 use contact_bounce::{Method, Nodes};

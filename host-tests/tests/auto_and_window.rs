@@ -56,7 +56,7 @@ fn auto_takes_the_only_tier_that_fits() {
 
 #[test]
 fn auto_answers_with_the_exact_tier_where_nothing_cheaper_promises() {
-    // The tactile dome at 0.1 %: no closed form, map or averaged figure of physics.md sec. 6
+    // The tactile dome at 0.1 %: no closed form, map or averaged figure of docs/physics.md sec. 6
     // promises that with damping; the exact tier does, at the float's rounding.
     let dome = catalogue::TACTILE_DOME.scene::<f64>().unwrap();
     for tol in [1e-3, 1e-9] {

@@ -1,5 +1,5 @@
 //! The averaged tier agrees with the closed forms in their limits and converges as nodes grow;
-//! the envelope inverts t(J); the tiers agree with each other where physics.md says they must.
+//! the envelope inverts t(J); the tiers agree with each other where docs/physics.md says they must.
 
 use contact_bounce::{
     Bodies, Contact, Count, Frequency, Method, Nodes, Offset, Regime, Restitution, Scene,
@@ -100,7 +100,7 @@ fn averaged_tends_to_t_b2_and_t_b2r_as_j0_vanishes() {
 #[test]
 fn averaged_converges_as_nodes_grow() {
     // Errors against 20 nodes fall as the rule grows and reach rounding by 8-12 nodes
-    // (physics.md sec. 3: 8-12 nodes on panels 0.5 wide in ln J).
+    // (docs/physics.md sec. 3: 8-12 nodes on panels 0.5 wide in ln J).
     let cases: [(f64, f64, f64, f64, Threshold<f64>); 5] = [
         (-1e-3, 0.3, 0.03, 0.35, Threshold::None), // tactile-dome-like preload
         (-1e-3, 0.01, 0.1, 30.0, Threshold::None), // zeta >> r, large j0
@@ -132,7 +132,7 @@ fn averaged_converges_as_nodes_grow() {
 
 #[test]
 fn averaged_matches_the_exact_undamped_sum() {
-    // Preload, zeta = 0. physics.md sec. 6 claims 1 % for j0 <= 1 at every R in [0.05, 0.999];
+    // Preload, zeta = 0. Simulation suggested 1 % for j0 <= 1 at every R in [0.05, 0.999];
     // exactly (Ti2 against the sums, scripts/averaged_error_table.py) it is 4.7 % at R = 0.05,
     // 1.7 % at R = 0.5, 0.26 % at R = 0.9; 4 % at R = 0.9 and 0.38 % at R = 0.99 for j0 = 100.
     let delta = -1e-3;
@@ -369,7 +369,7 @@ fn two_bodies_with_equal_partial_frequencies_reduce_exactly() {
 #[test]
 fn two_bodies_with_unequal_frequencies_are_flagged() {
     // A 10 % frequency mismatch: the Rayleigh frequency, flagged; a preload keeps an expected
-    // error (~1 % more), a gap loses it (physics.md sec. 1: 1.7-4.5x).
+    // error (~1 % more), a gap loses it (docs/physics.md sec. 1: 1.7-4.5x).
     let bodies = TwoBody {
         m1: 1e-3,
         c1: 1e3,

@@ -1,4 +1,4 @@
-//! The debouncer on bounce traces of the exact reference (the switches of physics.md sec. 7,
+//! The debouncer on bounce traces of the exact reference (the switches of docs/physics.md sec. 7,
 //! sampled at several periods and phases), with windows from the core's prediction widened by
 //! its expected error: no false edge, and in Confirm mode the edge comes one window after the
 //! last bounce, to within a sampling period.

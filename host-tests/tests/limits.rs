@@ -1,4 +1,4 @@
-//! The analytic limits of physics.md sec. 4-5: small-J limits of E1, the Delta = 0
+//! The analytic limits of docs/physics.md sec. 4-5: small-J limits of E1, the Delta = 0
 //! exponential, the bouncing-ball limit, the exact zeta = 0 sums against brute force, and the
 //! hereditary sum reducing to the viscous formula when Gs = 2 zeta Omega nu.
 

@@ -1,9 +1,9 @@
-//! The error to expect of each tier: physics.md sec. 6, as code.
+//! The error to expect of each tier: docs/physics.md sec. 6, as code.
 //!
-//! These are the figures measured against exact simulation in physics.md, except where an
-//! exact computation showed them wrong (the averaged tier on a preload: see
-//! `scripts/averaged_error_table.py`); the trade measurement (host-tests) checks and refines
-//! them. A tier outside every stated validity
+//! These are the figures of docs/physics.md sec. 6, measured against exact simulation or, where
+//! an exact computation showed the simulated figure wrong, computed exactly (the averaged tier
+//! on a preload: `scripts/averaged_error_table.py`); the trade measurement (host-tests) checks
+//! and refines them. A tier outside every stated validity
 //! reports `None` and sets [`Approximations::OUTSIDE_VALIDITY`].
 
 mod zeno_table;
@@ -30,7 +30,7 @@ pub(crate) fn exact_sum<F: Float>() -> F {
 
 /// Worst case over R of the error of t_b1 (linearised atan): x / atan(x) - 1, x = j0/2 (the
 /// first flight dominates as R -> 0; as R -> 1 it falls to x / Ti2(x) - 1, the 1 % at j0 = 0.61
-/// of physics.md sec. 5). Given up to j0 = 6.4 (50 % as R -> 1).
+/// of docs/physics.md sec. 5). Given up to j0 = 6.4 (50 % as R -> 1).
 ///
 /// Bounded from above without an atan, by Shafer's inequality atan(x) > 3x / (1 + 2 sqrt(1 + x^2))
 /// (x > 0): x / atan(x) - 1 < 2 x^2 / (3 (1 + sqrt(1 + x^2))), which exceeds it by x^4 / 180 for
@@ -44,8 +44,8 @@ pub(crate) fn atan_linearisation<F: Float>(j0: F) -> Option<F> {
     Some(F::TWO * x2 / (c::<F>(3.0) * (F::ONE + (F::ONE + x2).sqrt())))
 }
 
-/// t_b1v: within 2.5 % for j0 <= 1, R in [0.05, 0.999], zeta <= 0.5 (physics.md sec. 5); the
-/// atan linearisation error it shares with t_b1 is added, since physics.md's 2.5 % and the
+/// t_b1v: within 2.5 % for j0 <= 1, R in [0.05, 0.999], zeta <= 0.5 (docs/physics.md sec. 5); the
+/// atan linearisation error it shares with t_b1 is added, since docs/physics.md's 2.5 % and the
 /// R -> 0 bound of [`atan_linearisation`] disagree (7.8 % at j0 = 1): to be settled by the
 /// exact reference.
 pub(crate) fn t_b1v<F: Float>(j0: F, restitution: F, zeta: F) -> Option<F> {
@@ -57,7 +57,7 @@ pub(crate) fn t_b1v<F: Float>(j0: F, restitution: F, zeta: F) -> Option<F> {
     atan_linearisation(j0).map(|e| e + c(0.025))
 }
 
-/// t_b2: 10 % once J_B << 0.3 Omega |Delta| (taken as j0 <= 0.03) (physics.md sec. 5).
+/// t_b2: 10 % once J_B << 0.3 Omega |Delta| (taken as j0 <= 0.03) (docs/physics.md sec. 5).
 pub(crate) fn t_b2<F: Float>(j0: F) -> Option<F> {
     (j0 <= c(0.03)).then(|| c(0.10))
 }
@@ -72,7 +72,7 @@ fn flight_spread<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> F {
     }
 }
 
-/// The continuous model against the discrete impacts on the way to a threshold (physics.md
+/// The continuous model against the discrete impacts on the way to a threshold (docs/physics.md
 /// sec. 6: "about r/2"). With x = ln(P0 / P_end), the impulse falls by
 /// lambda = ln(1/R) + pi zeta / sqrt(1 - zeta^2) per impact (exact at Delta = 0), taken 1 %
 /// larger so that the floor below errs on the safe side, but by r + pi zeta per impact in the
@@ -99,7 +99,7 @@ pub(crate) fn discreteness<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> 
     })
 }
 
-/// The averaged tier (physics.md sec. 6).
+/// The averaged tier (docs/physics.md sec. 6).
 ///
 /// `impacts_total` decides a gap's figure (an estimate is fine: `Auto` takes the closed
 /// tier's).
@@ -114,7 +114,7 @@ pub(crate) fn averaged<F: Float, D: Dissipation<F>>(
     let r = scene.restitution();
     match scene.regime() {
         Regime::ZenoAccumulation => {
-            // The exact undamped error (generated table), plus physics.md's 1 % for the
+            // The exact undamped error (generated table), plus docs/physics.md's 1 % for the
             // first-order treatment of damping (zeta <= 0.5).
             let undamped = zeno_undamped(r, scene.dimensionless_impulse()?)?;
             let damping = if scene.dissipation().dissipates() {
@@ -125,7 +125,7 @@ pub(crate) fn averaged<F: Float, D: Dissipation<F>>(
             Some(undamped + damping)
         }
         Regime::LastImpact => {
-            // physics.md sec. 6: integrated to J = 0 the model overshoots by 0-2 free periods:
+            // docs/physics.md sec. 6: integrated to J = 0 the model overshoots by 0-2 free periods:
             // <= 1.5 % with >~100 impacts and R >= 0.99, <= 7 % with >~15 and R >= 0.9. On the
             // reference (host-tests `error-table`, 3000 gap scenes off the grid) it overshoots
             // by up to 2.86 free periods and its count n exceeds the true one by up to 3.63, so
@@ -174,17 +174,17 @@ pub(crate) fn quadrature<F: Float>(nodes: crate::Nodes) -> F {
     }
 }
 
-/// The semi-discrete map (physics.md sec. 6, checked against the exact reference by
+/// The semi-discrete map (docs/physics.md sec. 6, checked against the exact reference by
 /// host-tests `error-table`).
 ///
 /// - Endless regimes: its first-order loss per flight, 1 - pi zeta instead of
 ///   exp(-pi zeta / sqrt(1 - zeta^2)), drifts the impact count by ~ pi zeta / 2; once off by
 ///   one impact, the time is off by 1/m (m the last impact above the threshold).
-/// - Gap: 2 % (zeta <= 1e-3) and 12 % (zeta <= 0.01) of physics.md hold with many impacts; it
+/// - Gap: 2 % (zeta <= 1e-3) and 12 % (zeta <= 0.01) of docs/physics.md hold with many impacts; it
 ///   can also misjudge the last return by one flight: 1.1 spread / (N - 2) of the end time, N
 ///   its `impacts_total`, spread the longest flight over the first (no promise below 3
 ///   impacts: the truth may be a single impact).
-/// - Preload: 0.3 % (zeta <= 0.01) and 2.5 % (zeta <= 0.1) of physics.md hold up to j0 = 1;
+/// - Preload: 0.3 % (zeta <= 0.01) and 2.5 % (zeta <= 0.1) of docs/physics.md hold up to j0 = 1;
 ///   measured up to j0 = 10: 0.4 % and 4.4 % (bounded here by 0.5 % and 5 %).
 pub(crate) fn map<F: Float, D: Dissipation<F>>(
     scene: &Scene<F, D>,
@@ -242,11 +242,11 @@ pub(crate) fn reduction_flags<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) 
     }
 }
 
-/// Adds the error of a Rayleigh reduction. physics.md sec. 1 says ~1 % at a 10 % frequency
+/// Adds the error of a Rayleigh reduction. docs/physics.md sec. 1 says ~1 % at a 10 % frequency
 /// mismatch and ~10 % at 1.5x for a preload; the exact two-body reference (host-tests
 /// `error-table`, mass ratios 0.3-3) measures it nearly linear in the mismatch, 0.83 per unit:
 /// 4.2 % at 1.05, 8.3 % at 1.1, 34 % at 1.5. So: 0.9 (mismatch - 1) + 0.5 % up to 1.5x; beyond,
-/// or in any gap (1.7-4.5x off at a 10 % mismatch, physics.md), no figure.
+/// or in any gap (1.7-4.5x off at a 10 % mismatch, docs/physics.md), no figure.
 ///
 /// Every tier's figure goes through here, which also adds the math backend's error
 /// ([`Float::BACKEND_ERROR`]).

@@ -1,4 +1,4 @@
-//! Hereditary (viscoelastic) damping with an exponential relaxation kernel: physics.md sec. 3.
+//! Hereditary (viscoelastic) damping with an exponential relaxation kernel: docs/physics.md sec. 3.
 
 use super::{offset_class, sealed, Asymptote, Dissipation, Offset};
 use crate::error::{derived, physical, positive, Error, Parameter, Reason};
@@ -7,7 +7,7 @@ use crate::Float;
 
 /// Hereditary damping by the relaxation kernel Gamma(t) = kappa exp(-t / tau).
 ///
-/// E1 term (physics.md sec. 3, the paper's formula corrected: coefficient 2, every harmonic):
+/// E1 term (docs/physics.md sec. 3, the paper's formula corrected: coefficient 2, every harmonic):
 ///
 /// -(2 J omega^3 / pi^2) sum_{k>=1} k Gs(k omega) / (Omega^2 - k^2 omega^2)^2,
 /// Gs(nu) = kappa nu tau^2 / (1 + nu^2 tau^2),
@@ -21,7 +21,7 @@ use crate::Float;
 /// kept inside that bracket, is added (in practice far closer than the bound). So the
 /// returned rate is within `tolerance` of the full infinite sum unless `max_harmonics` (default
 /// 4096) stops it first, in which case [`HarmonicSum::relative_error`] says how far. The
-/// averaging itself is within ~0.3 % of exact simulation (physics.md sec. 6).
+/// averaging itself is within ~0.3 % of exact simulation (docs/physics.md sec. 6).
 ///
 /// ```
 /// use contact_bounce::{Dissipation, Hereditary, Orbit, Viscous};

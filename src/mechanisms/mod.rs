@@ -1,4 +1,4 @@
-//! Dissipation mechanisms and the averaged rate E1(J): physics.md sec. 3.
+//! Dissipation mechanisms and the averaged rate E1(J): docs/physics.md sec. 3.
 //!
 //! Mechanisms add: E1 = restitution + viscous + hereditary. Restitution is part of every
 //! [`Scene`](crate::Scene); the others are types implementing [`Dissipation`], so a scene
@@ -25,7 +25,7 @@ pub(crate) mod sealed {
 }
 
 /// The small-impulse asymptote of an averaged rate: E1(J) -> -(constant + linear J + inverse / J)
-/// as J -> 0 (physics.md sec. 4, "small-J limits of E1"). Each mechanism contributes to one
+/// as J -> 0 (docs/physics.md sec. 4, "small-J limits of E1"). Each mechanism contributes to one
 /// term, depending on the sign of Delta.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]

@@ -1,4 +1,4 @@
-//! Loss at the impacts: the restitution term of E1 (physics.md sec. 3).
+//! Loss at the impacts: the restitution term of E1 (docs/physics.md sec. 3).
 
 use super::{offset_class, Asymptote, Offset};
 use crate::orbit::{Orbit, OrbitPoint};
@@ -6,7 +6,7 @@ use crate::Float;
 
 /// The restitution term of E1: -(1 - R) J / T(J) (m/s^2), with `one_minus_r` = 1 - R.
 ///
-/// The paper's preload form needs arctg(J/(2 Omega |Delta|)) (physics.md sec. 4, errata); with
+/// The paper's preload form needs arctg(J/(2 Omega |Delta|)) (docs/physics.md sec. 4, errata); with
 /// T = 2 theta / Omega this is that form for every sign of Delta.
 ///
 /// ```
@@ -20,7 +20,7 @@ pub fn restitution_rate<F: Float>(one_minus_r: F, point: &OrbitPoint<F>) -> F {
     -one_minus_r * point.impulse() / point.period()
 }
 
-/// Small-J asymptote of the restitution term (physics.md sec. 4): preload r Omega^2 |Delta|,
+/// Small-J asymptote of the restitution term (docs/physics.md sec. 4): preload r Omega^2 |Delta|,
 /// gap r Omega J / (2 pi), Delta = 0 exactly r Omega J / pi.
 pub(crate) fn restitution_asymptote<F: Float>(one_minus_r: F, orbit: &Orbit<F>) -> Asymptote<F> {
     let omega = orbit.omega();

@@ -1,6 +1,6 @@
 //! Composite Gauss-Legendre quadrature and compensated summation.
 //!
-//! The averaged model integrates in s = ln J (physics.md sec. 3), where its integrands are
+//! The averaged model integrates in s = ln J (docs/physics.md sec. 3), where its integrands are
 //! smooth and bounded: panels at most 0.5 wide, [`Nodes`] points each.
 
 pub(crate) mod table;
@@ -9,7 +9,7 @@ use crate::Float;
 
 /// Gauss-Legendre points per panel: the averaged tier's accuracy knob.
 ///
-/// With panels 0.5 wide in ln J the averaged integrals converge fast (physics.md sec. 3): 8
+/// With panels 0.5 wide in ln J the averaged integrals converge fast (docs/physics.md sec. 3): 8
 /// to 12 nodes reach the rounding level of f64 for smooth scenes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]

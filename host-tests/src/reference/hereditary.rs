@@ -1,5 +1,5 @@
 //! Exact event-driven simulation of one body with an exponential relaxation kernel
-//! Gamma(t) = kappa exp(-t / tau) (physics.md sec. 3).
+//! Gamma(t) = kappa exp(-t / tau) (docs/physics.md sec. 3).
 //!
 //! The kernel is an augmented linear state: y' = x - y / tau, the force kappa y acting on the
 //! body (dissipative: its mean power on a harmonic orbit is -A^2 nu Gs(nu) / 2). Between impacts

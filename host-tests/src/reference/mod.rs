@@ -23,7 +23,7 @@ use one_body::{Oscillator, ZENO_TAIL};
 /// geometric (its error is about half of it, on the tail).
 pub const TAIL_DRIFT: f64 = 1e-13;
 
-/// One body against a stop (physics.md sec. 1), f64, SI units.
+/// One body against a stop (docs/physics.md sec. 1), f64, SI units.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct OneBody {
     /// Omega (rad/s).
@@ -56,7 +56,7 @@ impl OneBody {
     }
 }
 
-/// How the bounce ends (physics.md sec. 4).
+/// How the bounce ends (docs/physics.md sec. 4).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Regime {
     /// Preload, R < 1.

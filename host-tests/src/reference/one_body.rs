@@ -1,4 +1,4 @@
-//! Exact event-driven simulation of one body against a stop (physics.md sec. 1 and 6).
+//! Exact event-driven simulation of one body against a stop (docs/physics.md sec. 1 and 6).
 //!
 //! Between impacts the motion is in closed form (under-, critically and over-damped); the
 //! next impact is searched between the first minimum of x and the next maximum, where x is

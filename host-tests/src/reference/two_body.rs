@@ -391,7 +391,7 @@ fn simulate_with_tail(
         return Err(Failure::Invalid("scene"));
     }
     let undamped = s.d.iter().all(|d| *d == 0.0);
-    // The regimes of physics.md sec. 4, for the relative motion.
+    // The regimes of docs/physics.md sec. 4, for the relative motion.
     let regime = if s.restitution == 1.0 && undamped {
         Regime::Periodic
     } else if s.delta < 0.0 && s.restitution < 1.0 {
