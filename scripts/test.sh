@@ -127,6 +127,9 @@ python3 scripts/capture-fixtures.py "$fixtures"
 diff -r -I '^\$date ' "$fixtures" bounce-table/tests/fixtures
 rm -rf "$fixtures"
 
+step "the repository stands alone: every citation points inside it"
+python3 scripts/doc-links.py
+
 step "generated tables are current"
 # (the committed files are the generators' output as rustfmt leaves it)
 python3 scripts/gauss_legendre.py | rustfmt --edition 2021 | diff - src/quadrature/table.rs

@@ -13,7 +13,7 @@
 //!
 //! The peers are re-implemented from their documentation, each at its documented default:
 //!
-//! - QMK (`docs/feature_debounce_type.md`), `DEBOUNCE` 5 ms: `sym_defer_pk` reports a key's
+//! - QMK (its documentation page `feature_debounce_type.md`), `DEBOUNCE` 5 ms: `sym_defer_pk` reports a key's
 //!   change once it has not changed for 5 ms; `sym_eager_pk` reports at once and then ignores the
 //!   key for 5 ms; `asym_eager_defer_pk` reports a press at once (then ignores the key for 5 ms)
 //!   and a release once the key has not changed for 5 ms.
