@@ -385,7 +385,15 @@ fn main() -> ExitCode {
     let (format, settings) = (options.format, &options.settings);
     let written = match &options.output {
         Some(path) => write_atomically_with(path, |w| {
-            render_to(w, format, &mut analyses, settings, typical, Some(layout))
+            render_to(
+                w,
+                format,
+                &mut analyses,
+                settings,
+                typical,
+                &source,
+                Some(layout),
+            )
         }),
         None => {
             let mut stdout = std::io::BufWriter::new(std::io::stdout().lock());
@@ -395,6 +403,7 @@ fn main() -> ExitCode {
                 &mut analyses,
                 settings,
                 typical,
+                &source,
                 Some(layout),
             )
             .and_then(|()| std::io::Write::flush(&mut stdout))
