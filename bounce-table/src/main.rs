@@ -48,11 +48,12 @@ const USAGE: &str = "usage: bounce-table [OPTIONS] [SCENE_FILE]
        bounce-table replay [--period S] [--split F] [--time-scale X] [--switch-type TYPE]
                            [--format table|markdown|json|curve] [--plot DIR]
                            [--capture-format jsonl|csv|vcd] [calibrate's capture options] CAPTURE
-       bounce-table calibrate [--format jsonl|csv|vcd] [--resolution S] [--burst-gap S]
+       bounce-table calibrate [--format report|c|rust|csv] [--output FILE]
+                              [--capture-format jsonl|csv|vcd] [--resolution S] [--burst-gap S]
                               [--quiet S] [--signal NAME] [--active-high]
                               [--skip-section NAME]
-                              [--percentile P] [--seed N] [--export c|rust] [--plot DIR]
-                              [--events] [--contact-models] CAPTURE
+                              [--percentile P] [--seed N] [--plot DIR]
+                              [--contact-models] CAPTURE
 
 Prints predicted bounce and debounce windows: for the built-in catalogue of typical switches
 (assumed values over assumed ranges, not a datasheet; windows the P99.9 over the ranges), or for the switches of SCENE_FILE
@@ -99,8 +100,10 @@ empirical quantiles on held-out halves, and recommends windows. High = open unle
   --skip-section NAME  leave out a JSON Lines section (repeatable)
   --percentile P       the windows' percentile of the bounce (99)
   --seed N             the random held-out split's seed (1)
-  --export c|rust      print only the windows, as #defines or Rust constants (ns)
-  --events             print only each event's description, one CSV row per event
+  --format F           report (default); c or rust: only the windows, as #defines or Rust
+                       constants (ns); csv: each event's description, one row per event
+  --output FILE        write there, completely or not at all (default: standard output)
+  --capture-format F   jsonl, csv or vcd (default: from the file's extension)
   --contact-models     also fit the two-body and compliant-contact models to each switch's
                        presses and check them on held-out halves (about a minute)
   --plot DIR           also write SWITCH-KIND.svg: observed bounce distribution vs the models";
@@ -269,33 +272,46 @@ fn main() -> ExitCode {
                 return ExitCode::from(2);
             }
         };
-        return match calibrate::load(&options) {
-            Ok((events, skipped)) => {
-                if options.events {
-                    out!(
-                        "{}",
-                        calibrate::events_csv(&events, options.resolution, options.burst_gap)
+        if let Some(output) = &options.output {
+            let same = std::fs::canonicalize(&options.file)
+                .ok()
+                .zip(std::fs::canonicalize(output).ok())
+                .is_some_and(|(a, b)| a == b);
+            if same {
+                eprintln!(
+                    "bounce-table calibrate: --output {} is the capture itself: refusing to overwrite it",
+                    printable(output)
+                );
+                return ExitCode::from(2);
+            }
+        }
+        let (events, skipped) = match calibrate::load(&options) {
+            Ok(x) => x,
+            Err(e) => {
+                eprintln!("bounce-table calibrate: {e}");
+                return ExitCode::from(2);
+            }
+        };
+        let text = if options.events {
+            calibrate::events_csv(&events, options.resolution, options.burst_gap)
+        } else {
+            let groups = calibrate::group(&events, options.resolution, options.burst_gap);
+            if let Some(rust) = options.export {
+                let names: Vec<String> = groups
+                    .keys()
+                    .map(|(switch, kind)| format!("{switch} {}", kind.name()))
+                    .collect();
+                if let Some((a, b, id)) = clash(names.iter().map(String::as_str)) {
+                    eprintln!(
+                        "bounce-table calibrate: {}: '{}' and '{}' both become {id} in generated code: rename a switch",
+                        printable(&options.file),
+                        printable(&a),
+                        printable(&b)
                     );
-                    return ExitCode::SUCCESS;
+                    return ExitCode::from(2);
                 }
-                let groups = calibrate::group(&events, options.resolution, options.burst_gap);
-                if let Some(rust) = options.export {
-                    let names: Vec<String> = groups
-                        .keys()
-                        .map(|(switch, kind)| format!("{switch} {}", kind.name()))
-                        .collect();
-                    if let Some((a, b, id)) = clash(names.iter().map(String::as_str)) {
-                        eprintln!(
-                            "bounce-table calibrate: {}: '{}' and '{}' both become {id} in generated code: rename a switch",
-                            printable(&options.file),
-                            printable(&a),
-                            printable(&b)
-                        );
-                        return ExitCode::from(2);
-                    }
-                    out!("{}", calibrate::export(&groups, options.percentile, rust));
-                    return ExitCode::SUCCESS;
-                }
+                calibrate::export(&groups, options.percentile, rust)
+            } else {
                 if let Some(dir) = &options.plot {
                     for ((switch, kind), d) in &groups {
                         let name = format!(
@@ -312,29 +328,39 @@ fn main() -> ExitCode {
                         }
                     }
                 }
-                outln!(
-                    "# Summary\n\n{}",
-                    calibrate::summary(&groups, options.percentile, options.burst_gap)
-                );
-                out!(
-                    "## Description\n\n{}",
+                let mut report = format!(
+                    "# Summary\n\n{}\n## Description\n\n{}",
+                    calibrate::summary(&groups, options.percentile, options.burst_gap),
                     calibrate::describe(&groups, options.resolution)
                 );
                 if skipped.total() > 0 {
-                    outln!("\n{}", skipped.describe(options.quiet));
+                    report.push_str(&format!("\n{}\n", skipped.describe(options.quiet)));
                 }
-                out!(
-                    "{}",
-                    calibrate::assess(&groups, options.percentile, options.seed)
-                );
+                report.push_str(&calibrate::assess(
+                    &groups,
+                    options.percentile,
+                    options.seed,
+                ));
                 if options.contact_models {
-                    out!("{}", calibrate::contact::report(&groups, options.seed));
+                    report.push_str(&calibrate::contact::report(&groups, options.seed));
                 }
-                ExitCode::SUCCESS
+                report
             }
-            Err(e) => {
-                eprintln!("bounce-table calibrate: {e}");
-                ExitCode::from(2)
+        };
+        return match &options.output {
+            Some(path) => match write_atomically(path, &text) {
+                Ok(()) => ExitCode::SUCCESS,
+                Err(e) => {
+                    eprintln!(
+                        "bounce-table calibrate: {}: cannot write it: {e}",
+                        printable(path)
+                    );
+                    ExitCode::FAILURE
+                }
+            },
+            None => {
+                out!("{text}");
+                ExitCode::SUCCESS
             }
         };
     }

@@ -969,7 +969,7 @@ pub struct Request {
 }
 
 /// Parses the arguments after `replay`: its own options, and `calibrate`'s for the capture
-/// (`--capture-format` for its `--format`).
+/// (its `--capture-format` too).
 ///
 /// # Errors
 /// An unknown option, a missing or bad value (named), no capture file.
@@ -1031,10 +1031,12 @@ fn options_unescaped(args: &[String]) -> Result<Request, String> {
             }
             "--plot" => plot = Some(it.next().ok_or("--plot needs a value")?.clone()),
             "--capture-format" => {
-                rest.push("--format".to_owned());
+                rest.push("--capture-format".to_owned());
                 rest.push(it.next().ok_or("--capture-format needs a value")?.clone());
             }
-            "--export" | "--events" => return Err(format!("{arg} is calibrate's, not replay's")),
+            "--export" | "--events" | "--output" => {
+                return Err(format!("{arg} is calibrate's, not replay's"))
+            }
             other => rest.push(other.to_owned()),
         }
     }

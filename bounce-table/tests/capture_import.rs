@@ -156,3 +156,74 @@ fn malformed_variants_are_rejected_with_the_line() {
     assert_eq!(e.line, 5, "{e}");
     assert_eq!(e.to_string(), "c.csv:5: level \"2\" is not 0 or 1");
 }
+
+#[test]
+fn calibrate_speaks_format_and_output_like_every_subcommand() {
+    use std::process::Command;
+    let bin = env!("CARGO_BIN_EXE_bounce-table");
+    let dir = std::env::temp_dir().join(format!("bounce-table-calibrate-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let run = |args: &[&str]| {
+        Command::new(bin)
+            .arg("calibrate")
+            .args(args)
+            .output()
+            .expect("run")
+    };
+    let csv = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/fixtures/button.csv").to_owned();
+    // The windows as code, written completely to --output (nothing on standard output).
+    let header = dir.join("windows.h");
+    let out = run(&[
+        "--format",
+        "c",
+        "--output",
+        header.to_str().expect("utf8"),
+        &csv,
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(out.stdout.is_empty());
+    let text = std::fs::read_to_string(&header).expect("header");
+    assert!(
+        text.starts_with("/* Debounce windows from a capture") && text.contains("#endif"),
+        "{text}"
+    );
+    // The older spelling gives the same windows.
+    let old = run(&["--export", "c", &csv]);
+    assert_eq!(old.stdout, text.as_bytes());
+    // Events as CSV; the capture's format said with --capture-format.
+    let events = run(&["--format", "csv", "--capture-format", "csv", &csv]);
+    assert!(events.status.success());
+    assert!(String::from_utf8_lossy(&events.stdout).starts_with("switch,"));
+    // A capture's format given to --format is refused with the option it belongs to.
+    let out = run(&["--format", "vcd", &csv]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--capture-format vcd"));
+    // The output may not be the capture itself, and a failed write leaves nothing behind.
+    let copy = dir.join("capture.csv");
+    std::fs::copy(&csv, &copy).expect("copy");
+    let copy = copy.to_str().expect("utf8");
+    let out = run(&["--format", "c", "--output", copy, copy]);
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(
+        std::fs::read_to_string(copy).expect("read"),
+        std::fs::read_to_string(&csv).expect("read")
+    );
+    let missing = dir.join("no-such-dir").join("w.h");
+    let out = run(&[
+        "--format",
+        "c",
+        "--output",
+        missing.to_str().expect("utf8"),
+        &csv,
+    ]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(std::fs::read_dir(&dir).expect("dir").all(|e| !e
+        .expect("entry")
+        .file_name()
+        .to_string_lossy()
+        .contains("tmp-")));
+}

@@ -303,12 +303,12 @@ fn a_reader_that_stops_early_ends_the_run_quietly() {
     use std::io::{BufRead, BufReader};
     use std::process::{Command, Stdio};
     // 20,000 presses: their CSV is far more than a pipe holds, so the writer meets the closed
-    // pipe (`bounce-table calibrate --events big.jsonl | head -1`).
+    // pipe (`bounce-table calibrate --format csv big.jsonl | head -1`).
     let path = tmp("big.jsonl");
     let line = "{\"dataset\":\"big\",\"test\":1,\"kind\":\"press\",\"section\":\"Normal\",\"section_invalid\":false,\"events\":[[0,1],[100,0],[5000,1],[9000,0]]}\n";
     std::fs::write(&path, line.repeat(20_000)).expect("write");
     let mut child = Command::new(env!("CARGO_BIN_EXE_bounce-table"))
-        .args(["calibrate", "--events", path.to_str().expect("utf8")])
+        .args(["calibrate", "--format", "csv", path.to_str().expect("utf8")])
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()

@@ -37,11 +37,14 @@ pub struct Options {
     pub percentile: f64,
     /// The random split's seed.
     pub seed: u64,
-    /// Print the windows as C (`Some(false)`) or Rust (`Some(true)`) instead of the report.
+    /// Print the windows as C (`Some(false)`) or Rust (`Some(true)`) instead of the report
+    /// (`--format c|rust`).
     pub export: Option<bool>,
+    /// Write the output there, completely or not at all (else standard output).
+    pub output: Option<String>,
     /// Write one SVG per switch and kind there.
     pub plot: Option<String>,
-    /// Print every event's description (CSV) instead of the report.
+    /// Print every event's description (CSV) instead of the report (`--format csv`).
     pub events: bool,
     /// Also fit the real-contact models (slow: tens of seconds).
     pub contact_models: bool,
@@ -75,6 +78,7 @@ fn options_unescaped(args: &[String]) -> Result<Options, String> {
     let mut percentile = 0.99;
     let mut seed = 1;
     let mut export = None;
+    let mut output = None;
     let mut plot = None;
     let mut events = false;
     let mut contact_models = false;
@@ -82,14 +86,37 @@ fn options_unescaped(args: &[String]) -> Result<Options, String> {
     while let Some(arg) = it.next() {
         let mut value = |name: &str| it.next().cloned().ok_or(format!("{name} needs a value"));
         match arg.as_str() {
-            "--format" => {
-                format = Some(match value("--format")?.as_str() {
+            "--capture-format" => {
+                format = Some(match value("--capture-format")?.as_str() {
                     "jsonl" => Format::Jsonl,
                     "csv" => Format::Csv,
                     "vcd" => Format::Vcd,
-                    other => return Err(format!("--format: '{other}' is not jsonl, csv or vcd")),
+                    other => {
+                        return Err(format!(
+                            "--capture-format: '{other}' is not jsonl, csv or vcd"
+                        ))
+                    }
                 });
             }
+            // What is written, as every subcommand says it: the report, the windows as code,
+            // or one CSV row per event (`--export` and `--events` are the older spellings).
+            "--format" => match value("--format")?.as_str() {
+                "report" | "markdown" => (export, events) = (None, false),
+                "c" => (export, events) = (Some(false), false),
+                "rust" => (export, events) = (Some(true), false),
+                "csv" => (export, events) = (None, true),
+                capture @ ("jsonl" | "vcd") => {
+                    return Err(format!(
+                        "--format: '{capture}' is a capture's format: --capture-format {capture}"
+                    ))
+                }
+                other => {
+                    return Err(format!(
+                        "--format: '{other}' is not report, c, rust or csv (events)"
+                    ))
+                }
+            },
+            "--output" => output = Some(value("--output")?),
             "--resolution" => resolution = seconds("--resolution", &value("--resolution")?)?,
             "--burst-gap" => burst_gap = seconds("--burst-gap", &value("--burst-gap")?)?,
             "--quiet" => quiet = seconds("--quiet", &value("--quiet")?)?,
@@ -136,7 +163,7 @@ fn options_unescaped(args: &[String]) -> Result<Options, String> {
             Some("jsonl") => Format::Jsonl,
             Some("csv") => Format::Csv,
             Some("vcd") => Format::Vcd,
-            _ => return Err(format!("{file}: say --format jsonl|csv|vcd")),
+            _ => return Err(format!("{file}: say --capture-format jsonl|csv|vcd")),
         },
     };
     Ok(Options {
@@ -151,6 +178,7 @@ fn options_unescaped(args: &[String]) -> Result<Options, String> {
         percentile,
         seed,
         export,
+        output,
         plot,
         events,
         contact_models,
@@ -223,7 +251,9 @@ mod tests {
             (&["--percentile", "0", "c.csv"], "--percentile"),
             (&["--export", "java", "c.csv"], "--export"),
             (&["--frobnicate", "c.csv"], "--frobnicate"),
-            (&["capture.bin"], "--format"),
+            (&["capture.bin"], "--capture-format"),
+            (&["--format", "java", "c.csv"], "--format"),
+            (&["--capture-format", "wav", "c.csv"], "--capture-format"),
             (&["a.csv", "b.csv"], "one capture"),
             (&[], "capture file"),
         ] {
