@@ -1,7 +1,7 @@
 //! What the desk tool computes for one switch: the nominal prediction (the cheapest tier
 //! meeting the tolerance, else the exact reference: this is the host), the window it implies,
-//! and with tolerances a seeded Monte Carlo (parallel) for the window at a percentile and the
-//! sensitivity of the bounce to each toleranced parameter.
+//! and with ranges a seeded Monte Carlo (parallel) for the window at a percentile and the
+//! sensitivity of the bounce to each ranged parameter.
 
 use std::sync::atomic::{AtomicU64, Ordering};
 
@@ -22,7 +22,7 @@ pub struct Settings {
     pub tolerance: f64,
     /// Percentile of the Monte Carlo windows (e.g. 99.9).
     pub percentile: f64,
-    /// Monte Carlo samples for scenes with tolerances.
+    /// Monte Carlo samples for scenes with ranges.
     pub samples: u64,
     /// Seed of the Monte Carlo.
     pub seed: u64,
@@ -135,7 +135,7 @@ pub fn estimate(scene: &Value, tolerance: f64) -> Result<Estimate, FieldError> {
     })
 }
 
-/// The Monte Carlo over a scene's tolerances.
+/// The Monte Carlo over a scene's ranges.
 #[derive(Debug, Clone, PartialEq)]
 pub struct MonteCarlo {
     /// Samples drawn.
@@ -150,7 +150,7 @@ pub struct MonteCarlo {
     pub exact: u64,
 }
 
-/// How much each toleranced parameter moves the bounce.
+/// How much each ranged parameter moves the bounce.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Sensitivity {
     /// The parameter (a scene key, `kernel.tau` for nested ones).
@@ -168,14 +168,14 @@ pub struct Analysis {
     pub name: String,
     /// The nominal scene's estimate.
     pub nominal: Estimate,
-    /// The window (s): the Monte Carlo's percentile when there are tolerances, else the
+    /// The window (s): the Monte Carlo's percentile when there are ranges, else the
     /// nominal upper bound.
     pub window: f64,
     /// The window in ticks of the period, rounded up.
     pub ticks: u32,
-    /// The Monte Carlo, with tolerances.
+    /// The Monte Carlo, with ranges.
     pub monte_carlo: Option<MonteCarlo>,
-    /// Sensitivities, largest contribution first (with tolerances).
+    /// Sensitivities, largest contribution first (with ranges).
     pub sensitivity: Vec<Sensitivity>,
 }
 
@@ -218,7 +218,7 @@ fn monte_carlo(template: &Template, settings: &Settings) -> Result<MonteCarlo, F
         all.extend(r.map_err(|e| FieldError {
             field: e.field,
             message: format!(
-                "a Monte Carlo sample is invalid: {} (narrow the tolerance)",
+                "a Monte Carlo sample is invalid: {} (narrow the range)",
                 e.message
             ),
         })?);
@@ -297,7 +297,7 @@ fn sensitivities(template: &Template, tolerance: f64) -> Result<Vec<Sensitivity>
 /// Analyses one switch.
 ///
 /// # Errors
-/// The invalid field (of the nominal scene, or of a sample: the tolerance reaches outside the
+/// The invalid field (of the nominal scene, or of a sample: the range reaches outside the
 /// model), or a window that does not fit in ticks.
 pub fn analyse(
     name: &str,

@@ -1,6 +1,6 @@
 //! `bounce-table`, the desk tool: predicted bounce and debounce windows for switches, from the
-//! built-in catalogue or a scene file (TOML or JSON, with tolerances), with Monte Carlo
-//! tolerance analysis, sensitivities, tables, firmware constants and plots; and `eval`, the
+//! built-in catalogue or a scene file (TOML or JSON, with ranges), with Monte Carlo
+//! analysis over parameter ranges, sensitivities, tables, firmware constants and plots; and `eval`, the
 //! JSON Lines interface to the model and the exact reference.
 
 pub mod analysis;

@@ -58,14 +58,14 @@ const USAGE: &str = "usage: bounce-table [OPTIONS] [SCENE_FILE]
 Prints predicted bounce and debounce windows: for the built-in catalogue of typical switches
 (assumed values over assumed ranges, not a datasheet; windows the P99.9 over the ranges), or for the switches of SCENE_FILE
 (.toml with [[switch]] tables, .json, or .jsonl; the keys of `eval`, and any number may be a
-tolerance: {min = a, max = b} or {value = x, spread = s}).
+range: {min = a, max = b} or {value = x, spread = s}).
 
 Options (every subcommand also takes -h/--help, -V/--version, and --option=value):
   --period SECONDS     tick period of the windows (default 1e-4)
   --format FORMAT      table, markdown, csv, json, c (a header) or rust (constants)
   --output FILE        write there, completely or not at all (default: standard output)
   --tolerance X        relative error asked of the model, else the exact reference (0.1)
-  --percentile P       percentile of the Monte Carlo window with tolerances (99.9)
+  --percentile P       percentile of the Monte Carlo window with ranges (99.9)
   --margin F           safety factor on every window, at least 1 (1: none; 1.5 for +50 %)
   --samples N          Monte Carlo samples (4000)
   --seed S             Monte Carlo seed (1)

@@ -483,7 +483,7 @@ fn provenance(settings: &Settings, source: &str) -> [String; 2] {
             time(settings.period)
         ),
         format!(
-            "Each window: the model's bound within {} (else the exact reference){margin}; for a switch with tolerances, P{} of {} Monte Carlo samples, seed {}.",
+            "Each window: the model's bound within {} (else the exact reference){margin}; for a switch with ranges, P{} of {} Monte Carlo samples, seed {}.",
             percent(settings.tolerance),
             settings.percentile,
             settings.samples,

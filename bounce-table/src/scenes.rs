@@ -1,5 +1,5 @@
 //! Reading switches: the built-in catalogue, or a scene file (TOML, JSON or JSON Lines) whose
-//! entries use the keys of `eval` and may carry tolerances (see [`crate::spreads`]).
+//! entries use the keys of `eval` and may carry ranges (see [`crate::spreads`]).
 
 use serde_json::{json, Value};
 
@@ -11,7 +11,7 @@ use crate::spreads::Template;
 pub struct Entry {
     /// Its name (or "entry N").
     pub name: String,
-    /// Its scene, with tolerances.
+    /// Its scene, with ranges.
     pub template: Template,
 }
 
@@ -75,7 +75,7 @@ pub fn catalogue() -> Vec<Entry> {
 }
 
 /// One entry of a scene file (its place `index`, from 0), parsed: a table/object whose
-/// tolerances parse. [`check`] says whether its nominal scene makes a scene.
+/// ranges parse. [`check`] says whether its nominal scene makes a scene.
 fn entry_of(file: &str, index: usize, scene: Value) -> Result<Entry, FileError> {
     let name = scene
         .get("name")

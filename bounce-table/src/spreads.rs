@@ -1,4 +1,4 @@
-//! Scene files with tolerances: any number of a scene may be a distribution,
+//! Scene files with ranges: any number of a scene may be a distribution,
 //! `{"min": a, "max": b}` (uniform on [a, b]) or `{"value": x, "spread": s}` (uniform on
 //! x (1 +- s)). A scene is then a template: its nominal scene takes the midpoints, and samples
 //! draw every distribution independently.
@@ -96,7 +96,7 @@ fn distribution(object: &Map<String, Value>, field: &str) -> Result<Option<Dist>
             }))
         }
         _ if keys.iter().any(|k| matches!(*k, "min" | "max" | "spread")) => Err(bad(
-            "a tolerance is {\"min\": a, \"max\": b} or {\"value\": x, \"spread\": s}",
+            "a range is {\"min\": a, \"max\": b} or {\"value\": x, \"spread\": s}",
         )),
         _ => Ok(None),
     }
@@ -110,7 +110,7 @@ fn walk(
     let Value::Object(object) = value else {
         return Ok(());
     };
-    // Only objects inside can be tolerances (or hold them): numbers and strings are skipped
+    // Only objects inside can be ranges (or hold them): numbers and strings are skipped
     // without a path.
     for (key, child) in object.iter_mut() {
         if let Value::Object(inner) = child {

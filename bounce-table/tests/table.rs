@@ -1,4 +1,4 @@
-//! The desk tool end to end: the catalogue, scene files with tolerances, every output format
+//! The desk tool end to end: the catalogue, scene files with ranges, every output format
 //! (the C header and the Rust constants compile), the Monte Carlo (reproducible, and its
 //! percentile window covers the exact reference), plots, and bad input.
 
