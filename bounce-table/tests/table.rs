@@ -456,6 +456,60 @@ fn more_threads_than_a_run_can_use_are_refused() {
         .success());
 }
 
+#[test]
+fn the_table_of_a_long_file_ends_quietly_when_its_reader_stops() {
+    use std::io::{BufRead, BufReader};
+    use std::process::Stdio;
+    // The streamed table mode: 20,000 switches are more than a pipe holds.
+    let catalogue = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenes/catalogue.jsonl"
+    ))
+    .expect("catalogue");
+    let line = catalogue.lines().next().expect("a line");
+    let path = tmp("piped.jsonl");
+    std::fs::write(&path, format!("{line}\n").repeat(20_000)).expect("write");
+    for format in ["table", "json", "csv"] {
+        let mut child = Command::new(BIN)
+            .args([path.to_str().expect("utf8"), "--format", format])
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .expect("spawn");
+        let mut first = String::new();
+        BufReader::new(child.stdout.take().expect("stdout"))
+            .read_line(&mut first)
+            .expect("a line");
+        assert!(!first.is_empty());
+        let out = child.wait_with_output().expect("wait");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(out.status.success(), "{format}: {:?}: {stderr}", out.status);
+        assert!(!stderr.contains("panicked"), "{stderr}");
+    }
+}
+
+#[test]
+fn a_write_that_fails_leaves_no_temporary_file() {
+    // The output path is a directory: the complete temporary file cannot be renamed onto it.
+    let dir = tmp("failed-write");
+    let target = dir.join("out");
+    std::fs::create_dir_all(&target).expect("dirs");
+    let out = run(&[
+        &example(),
+        "--samples",
+        "100",
+        "--output",
+        target.to_str().expect("utf8"),
+    ]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("cannot write it"));
+    let left: Vec<_> = std::fs::read_dir(&dir)
+        .expect("dir")
+        .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
+        .collect();
+    assert_eq!(left, ["out"], "{left:?}");
+}
+
 /// A JSON scene file of switches with these names (the tactile dome's parameters).
 fn named(file: &str, names: &[&str]) -> std::path::PathBuf {
     let switches: Vec<serde_json::Value> = names
