@@ -143,18 +143,13 @@ fn check_domain<F: Float>(
     zeta: F,
 ) -> Result<(), Error> {
     let smallest = F::from_f64(SMALLEST_RATE);
-    if restitution < F::from_f64(SMALLEST_RESTITUTION) {
-        let parameter = match given {
-            Restitution::Coefficient(_) => Parameter::Restitution,
-            Restitution::Loss(_) => Parameter::OneMinusRestitution,
-        };
-        return Err(Error::new(parameter, Reason::OutOfRange));
-    }
-    if loss > F::ZERO && loss < smallest {
-        return Err(Error::new(
-            Parameter::OneMinusRestitution,
-            Reason::OutOfRange,
-        ));
+    // The error names the parameter the caller gave: R, or 1 - R.
+    let given = match given {
+        Restitution::Coefficient(_) => Parameter::Restitution,
+        Restitution::Loss(_) => Parameter::OneMinusRestitution,
+    };
+    if restitution < F::from_f64(SMALLEST_RESTITUTION) || (loss > F::ZERO && loss < smallest) {
+        return Err(Error::new(given, Reason::OutOfRange));
     }
     if (zeta > F::ZERO && zeta < smallest) || zeta > F::from_f64(LARGEST_DAMPING) {
         return Err(Error::new(Parameter::DampingRatio, Reason::OutOfRange));
@@ -168,7 +163,7 @@ fn check_regime_scale<F: Float>(
     regime: Regime,
     asymptote: &Asymptote<F>,
     kernel: bool,
-    loss: F,
+    (loss, restitution_given): (F, Parameter),
     delta: F,
 ) -> Result<(), Error> {
     let normal = |value: F, parameter: Parameter| {
@@ -179,14 +174,14 @@ fn check_regime_scale<F: Float>(
         }
     };
     match regime {
-        Regime::ZenoAccumulation => normal(asymptote.constant, Parameter::OneMinusRestitution),
+        Regime::ZenoAccumulation => normal(asymptote.constant, restitution_given),
         Regime::LastImpact if kernel => normal(asymptote.inverse, Parameter::KernelAmplitude),
         Regime::LastImpact => normal(asymptote.inverse, Parameter::DampingRatio),
         // An endless decay without a kernel is exponential at small J: its rate must be
         // normal too (a subnormal zeta would make J / |E1| infinite).
         Regime::Endless if !kernel => {
             let culprit = if loss > F::ZERO && delta >= F::ZERO {
-                Parameter::OneMinusRestitution
+                restitution_given
             } else {
                 Parameter::DampingRatio
             };
@@ -453,7 +448,17 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         }
         let orbit = Orbit::new(omega, delta);
         let asymptote = restitution_asymptote(loss, &orbit).plus(dissipation.asymptote(&orbit));
-        check_regime_scale(regime, &asymptote, dissipation.has_kernel(), loss, delta)?;
+        let restitution_given = match contact.restitution {
+            Restitution::Coefficient(_) => Parameter::Restitution,
+            Restitution::Loss(_) => Parameter::OneMinusRestitution,
+        };
+        check_regime_scale(
+            regime,
+            &asymptote,
+            dissipation.has_kernel(),
+            (loss, restitution_given),
+            delta,
+        )?;
         // A first generating impulse below the floor: its phase J / (2 Omega |Delta|) is not a
         // normal number, and no tier could resolve the flights (f32: a closing speed of 1e-30
         // m/s against 2 Omega |Delta| = 6e13 m/s gave NaN).

@@ -247,6 +247,60 @@ impl SceneInput {
     ///
     /// # Errors
     /// The core's validation error, as the field it names.
+    /// The model's refusal as a field error: one out of range says the value given and what
+    /// the model takes ("restitution 1.2 is out of range: the model takes [1e-6, 1] ...").
+    fn fault(&self, e: contact_bounce::Error) -> FieldError {
+        let parameter = e.parameter();
+        if e.reason() == contact_bounce::Reason::OutOfRange {
+            if let (Some(value), Some(range)) = (self.value_of(parameter), accepted(parameter)) {
+                let name = parameter.name();
+                // As written in a scene file: 1.2, 1e-7, 1e31 (not 0.0000001).
+                let shown = if value == 0.0 || (1e-4..1e7).contains(&value.abs()) {
+                    format!("{value}")
+                } else {
+                    format!("{value:e}")
+                };
+                return FieldError::new(
+                    name,
+                    format!("{name} {shown} is out of range: the model takes {range}"),
+                );
+            }
+        }
+        e.into()
+    }
+
+    /// The value given for a parameter, if this scene has it.
+    fn value_of(&self, parameter: contact_bounce::Parameter) -> Option<f64> {
+        use contact_bounce::Parameter as P;
+        Some(match (parameter, self.stiffness, self.placement) {
+            (P::Omega, Spring::Omega(w), _) => w,
+            (P::Mass, Spring::MassStiffness(m, _), _) => m,
+            (P::Stiffness, Spring::MassStiffness(_, k), _) => k,
+            (P::Delta, _, Placement::Gap(d)) => d,
+            (P::PreloadForce, _, Placement::PreloadForce(f)) => f,
+            (P::Restitution, ..) => self.restitution,
+            (P::DampingRatio, ..) => self.damping_ratio,
+            (P::ClosingSpeed, ..) => self.closing_speed,
+            (P::ThresholdFraction, ..) => match self.threshold {
+                Threshold::FractionOfFirst(f) => f,
+                _ => return None,
+            },
+            (P::ThresholdImpulse, ..) => match self.threshold {
+                Threshold::Impulse(p) => p,
+                _ => return None,
+            },
+            (P::KernelAmplitude, ..) => self.kernel?.kappa,
+            (P::KernelTimeConstant, ..) => self.kernel?.tau,
+            (P::Mass1, Spring::TwoBody(b, ..), _) => b.m1,
+            (P::Stiffness1, Spring::TwoBody(b, ..), _) => b.c1,
+            (P::Damping1, Spring::TwoBody(b, ..), _) => b.d1,
+            (P::Mass2, Spring::TwoBody(b, ..), _) => b.m2,
+            (P::Stiffness2, Spring::TwoBody(b, ..), _) => b.c2,
+            (P::Damping2, Spring::TwoBody(b, ..), _) => b.d2,
+            _ => return None,
+        })
+    }
+
     pub fn core<F: contact_bounce::Float>(
         &self,
     ) -> Result<Scene<F, AnyDissipation<F>>, FieldError> {
@@ -281,10 +335,10 @@ impl SceneInput {
             }
         };
         let kernel = match self.kernel {
-            Some(k) => Some(Hereditary::exponential(
-                c("kernel.kappa", k.kappa)?,
-                c("kernel.tau", k.tau)?,
-            )?),
+            Some(k) => Some(
+                Hereditary::exponential(c("kernel.kappa", k.kappa)?, c("kernel.tau", k.tau)?)
+                    .map_err(|e| self.fault(e))?,
+            ),
             None => None,
         };
         let restitution = Restitution::Coefficient(c("restitution", self.restitution)?);
@@ -299,7 +353,8 @@ impl SceneInput {
                     c2: c("two_body.c2", b.c2)?,
                     d2: c("two_body.d2", b.d2)?,
                 };
-                Scene::two_body(bodies, offset, restitution, v0, threshold, kernel)?
+                Scene::two_body(bodies, offset, restitution, v0, threshold, kernel)
+                    .map_err(|e| self.fault(e))?
             }
             Spring::Omega(_) | Spring::MassStiffness(..) => {
                 let frequency = match self.stiffness {
@@ -309,7 +364,10 @@ impl SceneInput {
                     },
                     Spring::Omega(w) | Spring::TwoBody(_, w, _) => Frequency::Omega(c("omega", w)?),
                 };
-                let viscous = Some(Viscous::new(c("damping_ratio", self.damping_ratio)?)?);
+                let viscous = Some(
+                    Viscous::new(c("damping_ratio", self.damping_ratio)?)
+                        .map_err(|e| self.fault(e))?,
+                );
                 Scene::new(
                     Contact {
                         frequency,
@@ -319,9 +377,44 @@ impl SceneInput {
                         threshold,
                     },
                     (viscous, kernel),
-                )?
+                )
+                .map_err(|e| self.fault(e))?
             }
         };
         Ok(scene)
     }
+}
+
+/// What the model takes for a parameter it can refuse as out of range, in a scene file's terms.
+fn accepted(parameter: contact_bounce::Parameter) -> Option<String> {
+    use contact_bounce::{
+        Parameter as P, LARGEST_DAMPING, PHYSICAL_RANGE, SMALLEST_RATE, SMALLEST_RESTITUTION,
+    };
+    let (lo, hi) = PHYSICAL_RANGE;
+    Some(match parameter {
+        P::Omega
+        | P::Mass
+        | P::Stiffness
+        | P::PreloadForce
+        | P::ClosingSpeed
+        | P::ThresholdImpulse
+        | P::KernelTimeConstant
+        | P::Mass1
+        | P::Stiffness1
+        | P::Mass2
+        | P::Stiffness2 => format!("values in [{lo:e}, {hi:e}]"),
+        P::Damping1 | P::Damping2 => format!("0 or values in [{lo:e}, {hi:e}]"),
+        P::Delta => format!("0 (grazing) or |gap| in [{lo:e}, {hi:e}]"),
+        P::Restitution => format!(
+            "R in [{SMALLEST_RESTITUTION:e}, 1], with 1 - R either 0 or at least {SMALLEST_RATE:e}"
+        ),
+        P::DampingRatio => format!("0 or values in [{SMALLEST_RATE:e}, {LARGEST_DAMPING:e}]"),
+        P::ThresholdFraction => "values in (0, 1)".to_owned(),
+        P::KernelAmplitude => {
+            "kappa tau below Omega^2 (the kernel's static stiffness must leave the spring a \
+             restoring force)"
+                .to_owned()
+        }
+        _ => return None,
+    })
 }

@@ -220,3 +220,57 @@ fn bad_options_are_refused() {
         assert_eq!(status.code(), Some(2), "{args:?}");
     }
 }
+
+#[test]
+fn a_value_out_of_range_is_named_with_what_was_given_and_what_the_model_takes() {
+    let line = |field: &str, value: &str| {
+        let mut scene = serde_json::json!({
+            "omega": 1000, "gap": -0.001, "restitution": 0.5, "closing_speed": 0.2,
+        });
+        let v: Value = serde_json::from_str(value).expect("a number");
+        match field.split_once('.') {
+            Some((outer, inner)) => scene[outer] = serde_json::json!({ inner: v, "tau": 1e-5 }),
+            None => scene[field] = v,
+        }
+        format!("{scene}\n")
+    };
+    for (field, value, shown, takes) in [
+        ("restitution", "1.2", "restitution 1.2 ", "[1e-6, 1]"),
+        // Within 1e-12 of 1: the error names R, as given (it named one_minus_restitution).
+        (
+            "restitution",
+            "0.9999999999999",
+            "restitution 0.9999999999999 ",
+            "at least 1e-12",
+        ),
+        ("restitution", "1e-7", "restitution 1e-7 ", "[1e-6, 1]"),
+        (
+            "damping_ratio",
+            "1e-13",
+            "damping_ratio 1e-13 ",
+            "[1e-12, 1e3]",
+        ),
+        (
+            "damping_ratio",
+            "2000",
+            "damping_ratio 2000 ",
+            "[1e-12, 1e3]",
+        ),
+        ("omega", "1e31", "omega 1e31 ", "[1e-30, 1e30]"),
+        ("threshold_fraction", "2", "threshold_fraction 2 ", "(0, 1)"),
+    ] {
+        let (out, code) = eval(&[], &line(field, value));
+        assert_eq!(
+            code, 1,
+            "{field} {value}: a failed line makes the exit status 1"
+        );
+        assert_eq!(out[0]["field"], field, "{out:?}");
+        let message = out[0]["error"].as_str().expect("a message");
+        assert!(
+            message.starts_with(shown)
+                && message.contains("out of range")
+                && message.contains(takes),
+            "{field} {value}: {message}"
+        );
+    }
+}

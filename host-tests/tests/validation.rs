@@ -545,6 +545,16 @@ fn the_model_domain_is_enforced() {
         Reason::OutOfRange,
     );
     assert!(Scene::new(loss(1e-12), Undamped).is_ok());
+    // The same limit given as R names R, the parameter given (it named one_minus_restitution,
+    // a field a scene file does not have).
+    expect(
+        Contact {
+            restitution: Restitution::Coefficient(1.0 - 1e-13),
+            ..good()
+        },
+        Parameter::Restitution,
+        Reason::OutOfRange,
+    );
     let coefficient = Contact {
         restitution: Restitution::Coefficient(1e-7),
         ..good()
