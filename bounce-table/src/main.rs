@@ -310,7 +310,17 @@ fn main() -> ExitCode {
                     );
                     return ExitCode::from(2);
                 }
-                calibrate::export(&groups, options.percentile, rust)
+                match calibrate::export(&groups, options.percentile, rust) {
+                    Ok(text) => text,
+                    Err(e) => {
+                        eprintln!(
+                            "bounce-table calibrate: {}: {}",
+                            printable(&options.file),
+                            printable(&e)
+                        );
+                        return ExitCode::from(2);
+                    }
+                }
             } else {
                 if let Some(dir) = &options.plot {
                     for ((switch, kind), d) in &groups {

@@ -131,7 +131,7 @@ fn exported_windows_compile_as_c_and_rust() {
     let header = dir.join("windows.h");
     std::fs::write(
         &header,
-        bounce_table::calibrate::export(&groups, 0.99, false),
+        bounce_table::calibrate::export(&groups, 0.99, false).unwrap(),
     )
     .unwrap();
     let c = dir.join("use.c");
@@ -145,7 +145,7 @@ fn exported_windows_compile_as_c_and_rust() {
     .unwrap();
     common::compile_c(&c, &dir);
     let rs = dir.join("windows.rs");
-    let constants = bounce_table::calibrate::export(&groups, 0.99, true);
+    let constants = bounce_table::calibrate::export(&groups, 0.99, true).unwrap();
     std::fs::write(
         &rs,
         format!("{constants}\npub fn w() -> u64 {{ SYNTHETIC_PRESS_WINDOW_NS }}\n"),
@@ -154,6 +154,25 @@ fn exported_windows_compile_as_c_and_rust() {
     common::compile_rust(&rs, &dir);
     // The window exported is the recommended one (nanoseconds, rounded up), at least the
     // bounce of these identical presses.
+    // A capture in the wrong unit (times a billion times too long): refused, not a
+    // saturated number.
+    let long: Vec<Event> = (0..6)
+        .map(|i| {
+            let start = f64::from(i) * 1e13;
+            Event {
+                switch: "long".to_owned(),
+                origin: format!("event {i}"),
+                kind: Kind::Press,
+                changes: vec![start, start + 1e11, start + 2e11, start + 3e11],
+            }
+        })
+        .collect();
+    let long_groups = group(&long, 1e-12, GAP);
+    let refused = bounce_table::calibrate::export(&long_groups, 0.99, false).unwrap_err();
+    assert!(
+        refused.contains("beyond a 64-bit count of nanoseconds"),
+        "{refused}"
+    );
     let d: Vec<_> = groups.values().flatten().collect();
     let window = bounce_table::calibrate::window(&d, 0.99);
     let recommended = window.recommended();

@@ -5,8 +5,11 @@ use super::Groups;
 use crate::capture;
 
 /// The windows as C `#define`s or Rust constants (nanoseconds, rounded up).
-#[must_use]
-pub fn export(groups: &Groups<'_>, percentile: f64, rust: bool) -> String {
+///
+/// # Errors
+/// A window beyond a 64-bit count of nanoseconds (about 585 years: a capture whose times are
+/// not seconds), naming its switch and kind.
+pub fn export(groups: &Groups<'_>, percentile: f64, rust: bool) -> Result<String, String> {
     let mut out = String::new();
     let guard = "BOUNCE_CALIBRATED_H";
     if rust {
@@ -23,8 +26,12 @@ pub fn export(groups: &Groups<'_>, percentile: f64, rust: bool) -> String {
     for ((switch, kind), d) in groups {
         let refs: Vec<&capture::Description> = d.iter().collect();
         let w = window(&refs, percentile).recommended();
-        #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
-        let ns = (w * 1e9).ceil() as u64;
+        let ns = crate::output::window_ns(w).ok_or_else(|| {
+            format!(
+                "{switch} {}: the window, {w:e} s, is beyond a 64-bit count of nanoseconds",
+                kind.name()
+            )
+        })?;
         let id = crate::output::identifier(&format!("{switch} {}", kind.name()));
         if rust {
             out.push_str(&format!("pub const {id}_WINDOW_NS: u64 = {ns};\n"));
@@ -35,5 +42,5 @@ pub fn export(groups: &Groups<'_>, percentile: f64, rust: bool) -> String {
     if !rust {
         out.push_str(&format!("\n#endif /* {guard} */\n"));
     }
-    out
+    Ok(out)
 }
