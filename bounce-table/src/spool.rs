@@ -3,7 +3,8 @@
 //! is analysed, in memory that does not grow with the file.
 //!
 //! The file is private to the run: on Unix it is unlinked as soon as it is created (the open
-//! handle keeps it), elsewhere it is removed when the spool is dropped. Numbers are stored as
+//! handle keeps it), elsewhere it is removed when the spool is dropped. Where the temporary
+//! directory refuses a file, the records stay in memory (compact: about 100 bytes a switch). Numbers are stored as
 //! their bits, so every value, infinities included, reads back exactly.
 
 use std::fs::File;
@@ -14,7 +15,7 @@ use crate::analysis::{Analysis, Estimate, MonteCarlo, Sensitivity};
 
 /// Analyses written once and read back any number of times, in order.
 pub struct Spool {
-    file: BufWriter<File>,
+    backing: Backing,
     /// The path to remove on drop where it could not be unlinked at once.
     path: Option<PathBuf>,
     len: usize,
@@ -22,12 +23,18 @@ pub struct Spool {
     sensitivity: bool,
 }
 
+/// Where the records are.
+enum Backing {
+    /// A private temporary file.
+    File(BufWriter<File>),
+    /// Memory, where the temporary directory refused a file (a run must not fail for that).
+    Memory(Vec<u8>),
+}
+
 impl Spool {
-    /// A new, empty spool in the system's temporary directory.
-    ///
-    /// # Errors
-    /// The temporary file cannot be created.
-    pub fn new() -> io::Result<Self> {
+    /// A new, empty spool: a private file in the system's temporary directory, else memory.
+    #[must_use]
+    pub fn new() -> Self {
         use std::sync::atomic::{AtomicU64, Ordering};
         static NEXT: AtomicU64 = AtomicU64::new(0);
         let path = std::env::temp_dir().join(format!(
@@ -35,22 +42,36 @@ impl Spool {
             std::process::id(),
             NEXT.fetch_add(1, Ordering::Relaxed)
         ));
-        let file = std::fs::OpenOptions::new()
+        let Ok(file) = std::fs::OpenOptions::new()
             .read(true)
             .write(true)
             .create_new(true)
-            .open(&path)?;
+            .open(&path)
+        else {
+            return Self::in_memory();
+        };
         let path = if cfg!(unix) && std::fs::remove_file(&path).is_ok() {
             None
         } else {
             Some(path)
         };
-        Ok(Self {
-            file: BufWriter::new(file),
+        Self {
+            backing: Backing::File(BufWriter::new(file)),
             path,
             len: 0,
             sensitivity: false,
-        })
+        }
+    }
+
+    /// A new, empty spool in memory.
+    #[must_use]
+    pub fn in_memory() -> Self {
+        Self {
+            backing: Backing::Memory(Vec::new()),
+            path: None,
+            len: 0,
+            sensitivity: false,
+        }
     }
 
     /// How many analyses it holds.
@@ -76,7 +97,10 @@ impl Spool {
     /// # Errors
     /// The write fails (a full disk).
     pub fn push(&mut self, a: &Analysis) -> io::Result<()> {
-        let w = &mut self.file;
+        let w: &mut dyn Write = match &mut self.backing {
+            Backing::File(f) => f,
+            Backing::Memory(v) => v,
+        };
         text(w, &a.name)?;
         text(w, &a.nominal.regime)?;
         text(w, &a.nominal.tier)?;
@@ -121,13 +145,25 @@ impl Spool {
     /// # Errors
     /// The file cannot be flushed or rewound.
     pub fn rows(&mut self) -> io::Result<Rows<'_>> {
-        self.file.flush()?;
-        let file = self.file.get_mut();
-        file.seek(SeekFrom::Start(0))?;
+        let reader: Box<dyn Read + '_> = match &mut self.backing {
+            Backing::File(f) => {
+                f.flush()?;
+                let file = f.get_mut();
+                file.seek(SeekFrom::Start(0))?;
+                Box::new(BufReader::new(file))
+            }
+            Backing::Memory(v) => Box::new(v.as_slice()),
+        };
         Ok(Rows {
-            reader: BufReader::new(file),
+            reader,
             left: self.len,
         })
+    }
+}
+
+impl Default for Spool {
+    fn default() -> Self {
+        Self::new()
     }
 }
 
@@ -141,7 +177,7 @@ impl Drop for Spool {
 
 /// The analyses of a [`Spool`], read back.
 pub struct Rows<'a> {
-    reader: BufReader<&'a mut File>,
+    reader: Box<dyn Read + 'a>,
     left: usize,
 }
 
@@ -157,16 +193,16 @@ impl Iterator for Rows<'_> {
     }
 }
 
-fn text(w: &mut impl Write, s: &str) -> io::Result<()> {
+fn text(w: &mut (impl Write + ?Sized), s: &str) -> io::Result<()> {
     w.write_all(&u64::try_from(s.len()).unwrap_or(u64::MAX).to_le_bytes())?;
     w.write_all(s.as_bytes())
 }
 
-fn number(w: &mut impl Write, x: f64) -> io::Result<()> {
+fn number(w: &mut (impl Write + ?Sized), x: f64) -> io::Result<()> {
     w.write_all(&x.to_bits().to_le_bytes())
 }
 
-fn optional(w: &mut impl Write, x: Option<f64>) -> io::Result<()> {
+fn optional(w: &mut (impl Write + ?Sized), x: Option<f64>) -> io::Result<()> {
     match x {
         None => w.write_all(&[0]),
         Some(x) => {
@@ -299,22 +335,23 @@ mod tests {
             analysis("a\nswitch \u{0}with a \"name\"", true),
             analysis("", false),
         ];
-        let mut spool = Spool::new().expect("spool");
-        for a in &rows {
-            spool.push(a).expect("push");
-        }
-        assert_eq!(spool.len(), 2);
-        for _ in 0..2 {
-            let back: Vec<Analysis> = spool
-                .rows()
-                .expect("rows")
-                .map(|r| r.expect("row"))
-                .collect();
-            assert_eq!(back.len(), 2);
-            for (b, a) in back.iter().zip(&rows) {
-                // NaN != NaN: compare the debug form, which shows every field.
-                assert_eq!(format!("{b:?}"), format!("{a:?}"));
-                assert_eq!(b.window.to_bits(), a.window.to_bits());
+        for mut spool in [Spool::new(), Spool::in_memory()] {
+            for a in &rows {
+                spool.push(a).expect("push");
+            }
+            assert_eq!(spool.len(), 2);
+            for _ in 0..2 {
+                let back: Vec<Analysis> = spool
+                    .rows()
+                    .expect("rows")
+                    .map(|r| r.expect("row"))
+                    .collect();
+                assert_eq!(back.len(), 2);
+                for (b, a) in back.iter().zip(&rows) {
+                    // NaN != NaN: compare the debug form, which shows every field.
+                    assert_eq!(format!("{b:?}"), format!("{a:?}"));
+                    assert_eq!(b.window.to_bits(), a.window.to_bits());
+                }
             }
         }
     }

@@ -137,15 +137,8 @@ pub fn analyse_all(
     source: &str,
     report: &mut dyn FnMut(String),
 ) -> Option<(Spool, Layout)> {
-    let spool = match Spool::new() {
-        Ok(s) => s,
-        Err(e) => {
-            report(format!("a temporary file for the results: {e}"));
-            return None;
-        }
-    };
     let mut store = Store {
-        spool,
+        spool: Spool::new(),
         layout: Layout::default(),
         identifiers: HashMap::new(),
         generated: matches!(format, Format::C | Format::Rust),

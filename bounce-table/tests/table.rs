@@ -510,6 +510,23 @@ fn a_write_that_fails_leaves_no_temporary_file() {
     assert_eq!(left, ["out"], "{left:?}");
 }
 
+#[test]
+fn a_run_without_a_writable_temporary_directory_still_answers() {
+    // The results are spooled to a temporary file; where there is none, they stay in memory.
+    let free = run(&["--format", "csv"]);
+    let out = Command::new(BIN)
+        .args(["--format", "csv"])
+        .env("TMPDIR", "/nonexistent/bounce-table")
+        .output()
+        .expect("run");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(out.stdout, free.stdout);
+}
+
 /// A JSON scene file of switches with these names (the tactile dome's parameters).
 fn named(file: &str, names: &[&str]) -> std::path::PathBuf {
     let switches: Vec<serde_json::Value> = names
