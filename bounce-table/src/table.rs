@@ -64,20 +64,34 @@ struct Store<'a> {
     failed: bool,
     source: &'a str,
     report: &'a mut dyn FnMut(String),
+    /// Faults found so far.
+    faults: usize,
 }
 
+/// Faults reported one by one; beyond these, only counted (a file of a million bad lines
+/// should not print a million messages).
+const REPORTED: usize = 100;
+
 impl Store<'_> {
+    /// Reports a fault, or counts it past [`REPORTED`].
+    fn fault(&mut self, message: String) {
+        self.faults += 1;
+        if self.faults <= REPORTED {
+            (self.report)(message);
+        }
+    }
+
     /// Takes a block's outcomes; `Err` if the spool cannot be written (reported).
     fn take(&mut self, outcomes: Vec<Outcome>) -> Result<(), ()> {
         for o in outcomes {
             match o {
                 Outcome::Valid => {}
                 Outcome::Invalid(e) => {
-                    (self.report)(e.to_string());
+                    self.fault(e.to_string());
                     self.invalid = true;
                 }
                 Outcome::Failed(e) => {
-                    (self.report)(e.to_string());
+                    self.fault(e.to_string());
                     self.failed = true;
                 }
                 Outcome::Analysed(a, cells) => {
@@ -92,7 +106,7 @@ impl Store<'_> {
                     }
                     if !self.failed {
                         if let Err(e) = self.spool.push(&a) {
-                            (self.report)(format!("a temporary file for the results: {e}"));
+                            self.fault(format!("a temporary file for the results: {e}"));
                             return Err(());
                         }
                     }
@@ -106,7 +120,7 @@ impl Store<'_> {
     fn name_in_code(&mut self, a: &Analysis) {
         let source = self.source;
         if window_ns(a.window).is_none() {
-            (self.report)(format!(
+            self.fault(format!(
                 "{source}: {}: its window, {:e} s, is beyond a 64-bit count of nanoseconds: generated code cannot hold it",
                 a.name, a.window
             ));
@@ -114,7 +128,7 @@ impl Store<'_> {
         }
         let id = identifier(&a.name);
         if let Some(first) = self.identifiers.get(&id) {
-            (self.report)(format!(
+            self.fault(format!(
                 "{source}: switches '{first}' and '{}' both become {id} in generated code: rename one",
                 a.name
             ));
@@ -126,7 +140,8 @@ impl Store<'_> {
 }
 
 /// Analyses every entry into a spool, in file order, and fits the terminal table's layout.
-/// Every fault goes to `report` (a message naming the file, the entry and the field): a file
+/// Every fault goes to `report` (a message naming the file, the entry and the field; past 100,
+/// only their count): a file
 /// with an invalid entry is checked to its end but no more analysed; in generated code, a
 /// window with no nanosecond form and two names with one identifier are faults. `None` if
 /// there was any fault, or no entry at all.
@@ -146,6 +161,7 @@ pub fn analyse_all(
         failed: false,
         source,
         report,
+        faults: 0,
     };
     let table = format == Format::Table;
     let mut read = || -> Vec<Raw> {
@@ -192,6 +208,10 @@ pub fn analyse_all(
         block = next;
     }
     store.take(pending).ok()?;
+    if store.faults > REPORTED {
+        let more = store.faults - REPORTED;
+        (store.report)(format!("{source}: {more} more faults not shown"));
+    }
     if seen == 0 {
         (store.report)(format!("{source}: no switches in the file"));
         return None;

@@ -527,6 +527,27 @@ fn a_run_without_a_writable_temporary_directory_still_answers() {
     assert_eq!(out.stdout, free.stdout);
 }
 
+#[test]
+fn past_a_hundred_faults_only_their_count_is_printed() {
+    let catalogue = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenes/catalogue.jsonl"
+    ))
+    .expect("catalogue");
+    let line = catalogue.lines().next().expect("a line");
+    let path = tmp("clashes.jsonl");
+    std::fs::write(&path, format!("{line}\n").repeat(500)).expect("write");
+    let out = run(&[path.to_str().expect("utf8"), "--format", "c"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(stderr.lines().count(), 101, "{stderr}");
+    assert!(stderr
+        .lines()
+        .last()
+        .is_some_and(|l| l.ends_with("399 more faults not shown")));
+}
+
 /// A JSON scene file of switches with these names (the tactile dome's parameters).
 fn named(file: &str, names: &[&str]) -> std::path::PathBuf {
     let switches: Vec<serde_json::Value> = names
