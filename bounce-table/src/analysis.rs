@@ -6,7 +6,7 @@
 use std::sync::atomic::{AtomicU64, Ordering};
 
 use contact_bounce::{Method, Nodes, Prediction, Regime, Tolerance};
-use host_tests::stats::nearest_rank;
+use contact_bounce_reference::stats::nearest_rank;
 use serde_json::Value;
 
 use crate::eval::exact_outcome;
@@ -117,11 +117,11 @@ pub fn estimate(scene: &Value, tolerance: f64) -> Result<Estimate, FieldError> {
     let out = exact_outcome(&input)?;
     let bounce = out.end_time.or(out.last_above_time).ok_or_else(endless)?;
     let regime = match out.regime {
-        host_tests::reference::Regime::ZenoAccumulation => "zeno_accumulation",
-        host_tests::reference::Regime::LastImpact => "last_impact",
-        host_tests::reference::Regime::Endless => "endless",
-        host_tests::reference::Regime::Periodic => "periodic",
-        host_tests::reference::Regime::SingleImpact => "single_impact",
+        contact_bounce_reference::Regime::ZenoAccumulation => "zeno_accumulation",
+        contact_bounce_reference::Regime::LastImpact => "last_impact",
+        contact_bounce_reference::Regime::Endless => "endless",
+        contact_bounce_reference::Regime::Periodic => "periodic",
+        contact_bounce_reference::Regime::SingleImpact => "single_impact",
     };
     #[allow(clippy::cast_precision_loss)]
     let impacts = out.impacts_above.map(|n| n as f64);

@@ -12,7 +12,7 @@ use contact_bounce::{
     Count, Dissipation, Float, MapImpacts, Method as CoreMethod, Nodes, Prediction, Time,
     Tolerance, DEFAULT_MAX_IMPACTS,
 };
-use host_tests::reference::{self, OneBody};
+use contact_bounce_reference::{self as reference, OneBody};
 use serde_json::{json, Value};
 
 use crate::analysis::regime_name;

@@ -189,7 +189,7 @@ pub fn plots(input: &SceneInput, span: f64) -> Result<(String, String), FieldErr
     // Exact impacts: every one for one body, the first five otherwise.
     let mut impacts = Vec::new();
     if input.kernel.is_none() && !matches!(input.stiffness, Spring::TwoBody(..)) {
-        let one = host_tests::reference::OneBody {
+        let one = contact_bounce_reference::OneBody {
             omega: scene.omega(),
             delta: scene.delta(),
             restitution: r,
@@ -197,9 +197,9 @@ pub fn plots(input: &SceneInput, span: f64) -> Result<(String, String), FieldErr
             closing_speed: scene.closing_speed(),
             threshold: scene.threshold_impulse(),
         };
-        let _ = host_tests::reference::simulate_observed(
+        let _ = contact_bounce_reference::simulate_observed(
             &one,
-            host_tests::reference::DEFAULT_BUDGET,
+            contact_bounce_reference::DEFAULT_BUDGET,
             |t, p| {
                 if t <= span && impacts.len() < 5000 {
                     impacts.push((t * 1e3, p * 2.0 * r / (1.0 + r)));

@@ -38,7 +38,7 @@ use crate::calibrate::{self, window};
 use crate::capture::{Event, Kind};
 use crate::output::time;
 use crate::priors::{self, Prior};
-use host_tests::stats::nearest_rank;
+use contact_bounce_reference::stats::nearest_rank;
 
 /// One test to replay: the contact before it and its changes (s, the first at 0).
 #[derive(Debug, Clone, PartialEq)]

@@ -11,7 +11,7 @@ use bounce_table::calibrate::{
 };
 use bounce_table::capture::{Event, Kind};
 use bounce_table::spreads::SplitMix;
-use host_tests::reference::{simulate_observed, OneBody, DEFAULT_BUDGET};
+use contact_bounce_reference::{simulate_observed, OneBody, DEFAULT_BUDGET};
 
 const OMEGA: f64 = 2.0 * std::f64::consts::PI * 1000.0;
 const DELTA: f64 = -1e-4;

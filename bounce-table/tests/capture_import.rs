@@ -170,7 +170,24 @@ fn calibrate_speaks_format_and_output_like_every_subcommand() {
             .output()
             .expect("run")
     };
-    let csv = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/fixtures/button.csv").to_owned();
+    // Eight presses and releases of a switch that bounces 40-75 us (the CSV fixture has two
+    // releases 250 times apart: their window is a fit's tail, beyond what code can hold).
+    let mut lines = String::new();
+    for test in 0..8_u64 {
+        let bounce = 40_000 + 5_000 * test;
+        for (kind, open) in [("press", 1), ("release", 0)] {
+            lines.push_str(&format!(
+                "{{\"dataset\":\"s\",\"test\":{test},\"kind\":\"{kind}\",\"section\":\"Normal\",\"section_invalid\":false,\"events\":[[0,{open}],[812,{}],[{},{open}],[{},{}]]}}\n",
+                1 - open,
+                812 + bounce / 2,
+                812 + bounce,
+                1 - open
+            ));
+        }
+    }
+    let capture = dir.join("capture.jsonl");
+    std::fs::write(&capture, lines).expect("write");
+    let csv = capture.to_str().expect("utf8").to_owned();
     // The windows as code, written completely to --output (nothing on standard output).
     let header = dir.join("windows.h");
     let out = run(&[
@@ -191,11 +208,21 @@ fn calibrate_speaks_format_and_output_like_every_subcommand() {
         text.starts_with("/* Debounce windows from a capture") && text.contains("#endif"),
         "{text}"
     );
+    // Two releases 250 times apart: the fit's tail puts the window at 1e26 s, which used to be
+    // exported as u64::MAX nanoseconds without a word. Refused, naming the switch.
+    let fixture_csv = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/fixtures/button.csv");
+    let out = run(&["--format", "c", fixture_csv]);
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains("button release") && stderr.contains("64-bit count"),
+        "{stderr}"
+    );
     // The older spelling gives the same windows.
     let old = run(&["--export", "c", &csv]);
     assert_eq!(old.stdout, text.as_bytes());
     // Events as CSV; the capture's format said with --capture-format.
-    let events = run(&["--format", "csv", "--capture-format", "csv", &csv]);
+    let events = run(&["--format", "csv", "--capture-format", "jsonl", &csv]);
     assert!(events.status.success());
     assert!(String::from_utf8_lossy(&events.stdout).starts_with("switch,"));
     // A capture's format given to --format is refused with the option it belongs to.
@@ -203,7 +230,7 @@ fn calibrate_speaks_format_and_output_like_every_subcommand() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("--capture-format vcd"));
     // The output may not be the capture itself, and a failed write leaves nothing behind.
-    let copy = dir.join("capture.csv");
+    let copy = dir.join("copy.jsonl");
     std::fs::copy(&csv, &copy).expect("copy");
     let copy = copy.to_str().expect("utf8");
     let out = run(&["--format", "c", "--output", copy, copy]);

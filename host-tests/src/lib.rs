@@ -1,7 +1,9 @@
-//! Host-side checks of `contact-bounce`: the exact reference simulation (std, f64) and the
-//! tools built on it.
+//! Host-side checks of `contact-bounce`: the tests, benches and report generators built on the
+//! exact reference simulation (`contact-bounce-reference`, std, f64).
 
 pub mod grid;
-pub mod reference;
-pub mod stats;
 pub mod traces;
+
+/// The exact reference (its own crate, shared with the desk tool).
+pub use contact_bounce_reference as reference;
+pub use contact_bounce_reference::stats;

@@ -1,7 +1,7 @@
 //! Real-contact models fitted to a capture's press bounces: the paper's two bodies (Eq. 1,
 //! whose stuck pair can reopen) and a compliant contact (a spring and dashpot at the stop,
 //! which dwells at each impact). Each is simulated exactly by the reference
-//! (`host_tests::reference::{two_body, compliant}`), over closing speeds spread log-normally
+//! (`contact_bounce_reference::{two_body, compliant}`), over closing speeds spread log-normally
 //! from press to press, and its parameters are those whose bounce durations best match the
 //! capture's (distribution functions and the share that reopens: [`ContactFit::misfit`]), by
 //! Nelder-Mead from the best of a seeded random search. What the models are worth is their held-out prediction, beside the empirical
@@ -10,9 +10,9 @@
 //! Timing alone fixes only ratios: a preload and the closing speeds scale together, so the
 //! preload is fixed at 10 um and the speeds are fitted; the masses enter by their ratio.
 
-use host_tests::reference::compliant::{self, Compliant};
-use host_tests::reference::two_body::{self, TwoBodies};
-use host_tests::stats::nearest_rank;
+use contact_bounce_reference::compliant::{self, Compliant};
+use contact_bounce_reference::stats::nearest_rank;
+use contact_bounce_reference::two_body::{self, TwoBodies};
 use statrs::distribution::{ContinuousCDF, Normal};
 
 use super::sorted;

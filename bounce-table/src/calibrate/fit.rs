@@ -4,7 +4,7 @@
 use super::predictive::Predictive;
 use super::sorted;
 use crate::capture;
-use host_tests::stats::nearest_rank;
+use contact_bounce_reference::stats::nearest_rank;
 
 /// Whether an event counts as bouncing in the fits: a bounce the instrument timed. One shorter
 /// than the resolution is fitted with the clean events: its duration is the instrument's

@@ -3,7 +3,7 @@
 use super::fit::{BounceModel, ImpactFit};
 use super::sorted;
 use crate::capture;
-use host_tests::stats::nearest_rank;
+use contact_bounce_reference::stats::nearest_rank;
 
 /// Picks one predictor's ratios out of a [`Validation`].
 pub(super) type Ratios = fn(&Validation) -> &[Option<f64>; 3];

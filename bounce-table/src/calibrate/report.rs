@@ -9,7 +9,7 @@ use super::window::{chronological_cover, window, Cover, FAR_BEYOND};
 use super::{sorted, Groups};
 use crate::capture;
 use crate::output::time;
-use host_tests::stats::nearest_rank;
+use contact_bounce_reference::stats::nearest_rank;
 
 fn q(v: &[f64], p: f64, show: impl Fn(f64) -> String) -> String {
     nearest_rank(v, p).map_or_else(|| "-".to_owned(), show)

@@ -316,7 +316,7 @@ pub fn simulate(k: &Kernelled, budget: u64) -> Result<Outcome, Failure> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::reference::{simulate as one, OneBody, DEFAULT_BUDGET};
+    use crate::{simulate as one, OneBody, DEFAULT_BUDGET};
 
     #[test]
     fn matrix_exponential_is_accurate() {

@@ -541,7 +541,7 @@ fn simulate_with_tail(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::reference::{simulate as one, OneBody, DEFAULT_BUDGET};
+    use crate::{simulate as one, OneBody, DEFAULT_BUDGET};
 
     fn pair(m: [f64; 2], c: [f64; 2], d: [f64; 2], delta: f64, r: f64, v0: f64) -> TwoBodies {
         TwoBodies {

@@ -1,4 +1,6 @@
-//! The exact reference (std, f64): event-driven simulation that the core is checked against.
+//! The exact reference (std, f64): event-driven simulation that the core is checked against
+//! (`host-tests`) and that the desk tool falls back on (`bounce-table`), kept in a crate of its
+//! own so that the tool does not depend on the test crate.
 //!
 //! Definitions every output uses (P_n = (1 + R) v_n is impact n's impulse per unit reduced
 //! mass, impact 0 at t = 0; P_end the threshold impulse):
@@ -15,6 +17,7 @@ pub mod brent;
 pub mod compliant;
 pub mod hereditary;
 pub mod one_body;
+pub mod stats;
 pub mod two_body;
 
 use one_body::{Oscillator, ZENO_TAIL};

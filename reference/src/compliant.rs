@@ -164,7 +164,7 @@ pub fn simulate(s: &Compliant, budget: usize) -> Result<Vec<Touch>, Failure> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::reference::{simulate_observed, OneBody, DEFAULT_BUDGET};
+    use crate::{simulate_observed, OneBody, DEFAULT_BUDGET};
 
     #[test]
     fn a_stiff_contact_is_a_newton_impact_with_its_restitution() {
