@@ -40,7 +40,8 @@ impl Format {
     }
 }
 
-/// A time for people: us below 1 ms, ms below 1 s, else s; "endless" when infinite.
+/// A time for people: us below 1 ms, ms below 1 s, s below a million seconds (11 days), then
+/// in powers of ten; "endless" when infinite.
 pub(crate) fn time(t: f64) -> String {
     if !t.is_finite() {
         "endless".to_owned()
@@ -48,8 +49,10 @@ pub(crate) fn time(t: f64) -> String {
         format!("{:.2} us", t * 1e6)
     } else if t < 1.0 {
         format!("{:.3} ms", t * 1e3)
-    } else {
+    } else if t < 1e6 {
         format!("{t:.3} s")
+    } else {
+        format!("{t:.3e} s")
     }
 }
 

@@ -38,11 +38,18 @@ impl Window {
                 "only the largest observed: {} bouncing events give no spread to extrapolate",
                 self.bouncing
             )),
-            Some(p) if p > FAR_BEYOND * self.observed => Some(format!(
-                "{:.1} times the largest observed: {} bouncing events spread widely, and the tail of a fit to so few reaches far",
-                p / self.observed,
-                self.bouncing
-            )),
+            Some(p) if p > FAR_BEYOND * self.observed => {
+                let times = p / self.observed;
+                let times = if times < 1e6 {
+                    format!("{times:.1}")
+                } else {
+                    format!("{times:.1e}")
+                };
+                Some(format!(
+                    "{times} times the largest observed: {} bouncing events spread widely, and the tail of a fit to so few reaches far",
+                    self.bouncing
+                ))
+            }
             _ => None,
         }
     }
