@@ -203,14 +203,9 @@ fn monte_carlo(template: &Template, settings: &Settings) -> Result<MonteCarlo, F
             progress(&done, n, &jobs);
         }
         jobs.into_iter()
-            .map(|job| {
-                job.join(&work).unwrap_or_else(|| {
-                    Err(FieldError {
-                        field: String::new(),
-                        message: "a worker panicked".to_owned(),
-                    })
-                })
-            })
+            .enumerate()
+            // A worker that panicked (a thread that could not start): its share again, here.
+            .map(|(k, job)| job.join(&work).unwrap_or_else(|| work(k)))
             .collect()
     });
     let mut all = Vec::new();

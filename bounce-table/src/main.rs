@@ -10,7 +10,7 @@ use std::process::ExitCode;
 
 use bounce_table::cli::parse;
 use bounce_table::output::{clash, identifier, render_to};
-use bounce_table::scenes::{catalogue, open, Entries};
+use bounce_table::scenes::{open, Entries};
 use bounce_table::strict::printable;
 use bounce_table::{calibrate, eval, plot, replay, scene_input::SceneInput, table};
 
@@ -107,6 +107,21 @@ empirical quantiles on held-out halves, and recommends windows. High = open unle
   --contact-models     also fit the two-body and compliant-contact models to each switch's
                        presses and check them on held-out halves (about a minute)
   --plot DIR           also write SWITCH-KIND.svg: observed bounce distribution vs the models";
+
+/// The scene file's entries (else the catalogue's); `None` when the file cannot be opened or
+/// parsed as a whole (each fault reported).
+fn open_entries(file: Option<&str>) -> Option<Entries> {
+    match file {
+        None => Some(Entries::catalogue()),
+        Some(path) => open(path)
+            .inspect_err(|errors| {
+                for e in errors {
+                    eprintln!("bounce-table: {e}");
+                }
+            })
+            .ok(),
+    }
+}
 
 /// Writes `text` to `path` completely or not at all (a temporary file, then a rename).
 fn write_atomically(path: &str, text: &str) -> std::io::Result<()> {
@@ -396,17 +411,8 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     }
-    let entries = match &options.file {
-        None => Entries::catalogue(),
-        Some(path) => match open(path) {
-            Ok(entries) => entries,
-            Err(errors) => {
-                for e in errors {
-                    eprintln!("bounce-table: {e}");
-                }
-                return ExitCode::from(2);
-            }
-        },
+    let Some(entries) = open_entries(options.file.as_deref()) else {
+        return ExitCode::from(2);
     };
     let Some((mut analyses, layout)) = table::analyse_all(
         entries,
@@ -419,36 +425,29 @@ fn main() -> ExitCode {
         return ExitCode::from(2);
     };
     let (format, settings) = (options.format, &options.settings);
+    let mut render = |w: &mut dyn std::io::Write| {
+        render_to(
+            w,
+            format,
+            &mut analyses,
+            settings,
+            typical,
+            &source,
+            Some(layout),
+        )
+    };
     let written = match &options.output {
-        Some(path) => write_atomically_with(path, |w| {
-            render_to(
-                w,
-                format,
-                &mut analyses,
-                settings,
-                typical,
-                &source,
-                Some(layout),
-            )
-        }),
+        Some(path) => write_atomically_with(path, render),
         None => {
             let mut stdout = std::io::BufWriter::new(std::io::stdout().lock());
-            render_to(
-                &mut stdout,
-                format,
-                &mut analyses,
-                settings,
-                typical,
-                &source,
-                Some(layout),
-            )
-            .and_then(|()| std::io::Write::flush(&mut stdout))
-            .inspect_err(|e| {
-                // A reader that stopped early ends the run quietly (see `emit`).
-                if e.kind() == std::io::ErrorKind::BrokenPipe {
-                    std::process::exit(0);
-                }
-            })
+            render(&mut stdout)
+                .and_then(|()| std::io::Write::flush(&mut stdout))
+                .inspect_err(|e| {
+                    // A reader that stopped early ends the run quietly (see `emit`).
+                    if e.kind() == std::io::ErrorKind::BrokenPipe {
+                        std::process::exit(0);
+                    }
+                })
         }
     };
     if let Err(e) = written {
@@ -461,17 +460,8 @@ fn main() -> ExitCode {
             eprintln!("bounce-table: {dir}: {e}");
             return ExitCode::FAILURE;
         }
-        let entries = match &options.file {
-            None => Box::new(catalogue().into_iter().map(Ok)) as Box<dyn Iterator<Item = _>>,
-            Some(path) => match open(path) {
-                Ok(entries) => Box::new(entries),
-                Err(errors) => {
-                    for e in errors {
-                        eprintln!("bounce-table: {e}");
-                    }
-                    return ExitCode::FAILURE;
-                }
-            },
+        let Some(entries) = open_entries(options.file.as_deref()) else {
+            return ExitCode::FAILURE;
         };
         let rows = match analyses.rows() {
             Ok(rows) => rows,

@@ -24,6 +24,15 @@ fn example() -> String {
     concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/example.toml").to_owned()
 }
 
+/// The catalogue as a JSON Lines scene file, one switch a line.
+fn catalogue_jsonl() -> String {
+    std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenes/catalogue.jsonl"
+    ))
+    .expect("catalogue")
+}
+
 fn tmp(name: &str) -> std::path::PathBuf {
     let dir = std::env::temp_dir().join(format!("bounce-table-test-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");
@@ -328,23 +337,26 @@ fn a_reader_that_stops_early_ends_the_run_quietly() {
 #[cfg(unix)]
 #[test]
 fn threads_the_system_refuses_are_worked_on_the_calling_thread() {
-    // 256 workers need 512 MB of stacks; under a 200 MB address-space limit the system refuses
-    // most of them (the Monte Carlo used to panic: "failed to spawn thread"). The answer must
-    // not change: sample i is the same on any thread.
+    // Every thread asks for a 4 GB stack (RUST_MIN_STACK) under a 2 GB address-space limit:
+    // the system refuses each one while the process keeps ample memory for everything else (a
+    // limit that refuses threads only once memory is exhausted makes any allocation fail
+    // too). The Monte Carlo used to panic: "failed to spawn thread". The answer must not
+    // change: sample i is the same on any thread.
     let args = [
         example(),
         "--samples".into(),
         "2000".into(),
         "--threads".into(),
-        "256".into(),
+        "8".into(),
     ];
     let free = Command::new(BIN).args(&args).output().expect("run");
     assert!(free.status.success());
     let limited = Command::new("sh")
         .arg("-c")
-        .arg("ulimit -v 200000 && exec \"$0\" \"$@\"")
+        .arg("ulimit -v 2000000 && exec \"$0\" \"$@\"")
         .arg(BIN)
         .args(&args)
+        .env("RUST_MIN_STACK", "4000000000")
         .output()
         .expect("run under a limit");
     let stderr = String::from_utf8_lossy(&limited.stderr);
@@ -360,11 +372,7 @@ fn a_long_scene_file_is_streamed_in_bounded_memory() {
     // 100,000 switches (the catalogue's, renamed): the whole file used to be held, parsed, as
     // JSON values, with every analysis and the whole rendered text (2 KB a line: 200 MB here,
     // 2 GB for a million lines). Streamed, the peak does not grow with the file.
-    let catalogue = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/scenes/catalogue.jsonl"
-    ))
-    .expect("catalogue");
+    let catalogue = catalogue_jsonl();
     let lines: Vec<&str> = catalogue.lines().collect();
     let n = 100_000;
     let mut text = String::new();
@@ -461,11 +469,7 @@ fn the_table_of_a_long_file_ends_quietly_when_its_reader_stops() {
     use std::io::{BufRead, BufReader};
     use std::process::Stdio;
     // The streamed table mode: 20,000 switches are more than a pipe holds.
-    let catalogue = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/scenes/catalogue.jsonl"
-    ))
-    .expect("catalogue");
+    let catalogue = catalogue_jsonl();
     let line = catalogue.lines().next().expect("a line");
     let path = tmp("piped.jsonl");
     std::fs::write(&path, format!("{line}\n").repeat(20_000)).expect("write");
@@ -529,11 +533,7 @@ fn a_run_without_a_writable_temporary_directory_still_answers() {
 
 #[test]
 fn past_a_hundred_faults_only_their_count_is_printed() {
-    let catalogue = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/scenes/catalogue.jsonl"
-    ))
-    .expect("catalogue");
+    let catalogue = catalogue_jsonl();
     let line = catalogue.lines().next().expect("a line");
     let path = tmp("clashes.jsonl");
     std::fs::write(&path, format!("{line}\n").repeat(500)).expect("write");
