@@ -242,11 +242,11 @@ pub(crate) fn reduction_flags<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) 
     }
 }
 
-/// Adds the error of a Rayleigh reduction. docs/physics.md sec. 1 says ~1 % at a 10 % frequency
-/// mismatch and ~10 % at 1.5x for a preload; the exact two-body reference (host-tests
-/// `error-table`, mass ratios 0.3-3) measures it nearly linear in the mismatch, 0.83 per unit:
-/// 4.2 % at 1.05, 8.3 % at 1.1, 34 % at 1.5. So: 0.9 (mismatch - 1) + 0.5 % up to 1.5x; beyond,
-/// or in any gap (1.7-4.5x off at a 10 % mismatch, docs/physics.md), no figure.
+/// Adds the error of a Rayleigh reduction (docs/physics.md sec. 1): the exact two-body
+/// reference (host-tests `error-table`, mass ratios 0.3-3) measures it nearly linear in the
+/// mismatch, 0.83 per unit: 4.2 % at 1.05, 8.3 % at 1.1, 34 % at 1.5 (a first simulation had
+/// suggested ~1 % at 1.1). So: 0.9 (mismatch - 1) + 0.5 % up to 1.5x; beyond, or in any gap
+/// (1.7-4.5x off at a 10 % mismatch), no figure.
 ///
 /// Every tier's figure goes through here, which also adds the math backend's error
 /// ([`Float::BACKEND_ERROR`]).
