@@ -243,10 +243,13 @@ fn progress<T>(done: &AtomicU64, total: u64, handles: &[crate::workers::Job<'_, 
     let start = std::time::Instant::now();
     let mut shown = false;
     while handles.iter().any(|h| !h.is_finished()) {
-        std::thread::sleep(std::time::Duration::from_millis(200));
+        // Polled often at first, so a short Monte Carlo is not held up by the bar it never
+        // shows (a poll of 200 ms cost every ranged switch 200 ms on a terminal).
         if start.elapsed().as_secs_f64() < 1.0 {
+            std::thread::sleep(std::time::Duration::from_millis(2));
             continue;
         }
+        std::thread::sleep(std::time::Duration::from_millis(200));
         let d = done.load(Ordering::Relaxed);
         #[allow(
             clippy::cast_precision_loss,

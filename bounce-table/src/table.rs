@@ -180,6 +180,8 @@ pub fn analyse_all(
         let workers = settings.threads.clamp(1, block.len().div_ceil(64));
         let inner = Settings {
             threads: if workers > 1 { 1 } else { settings.threads },
+            // One progress bar per switch, from several threads at once, would be noise.
+            progress: settings.progress && workers == 1,
             ..*settings
         };
         let share = block.len().div_ceil(workers);
