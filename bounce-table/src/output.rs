@@ -302,29 +302,6 @@ impl Layout {
     }
 }
 
-/// Renders the analyses.
-#[must_use]
-pub fn render(
-    format: Format,
-    analyses: &[Analysis],
-    settings: &Settings,
-    typical: bool,
-    source: &str,
-) -> String {
-    let mut out = Vec::new();
-    // Writing to memory fails only where a window has no nanosecond form (checked by callers).
-    let _ = render_to(
-        &mut out,
-        format,
-        &mut { analyses },
-        settings,
-        typical,
-        source,
-        None,
-    );
-    String::from_utf8(out).unwrap_or_default()
-}
-
 /// Renders the analyses to `out` as they are read from `analyses` (each row is read when it is
 /// written, so a spool of a million switches is never held in memory). `source` names the
 /// scene file (or the catalogue) in generated code. The table's `layout`,
