@@ -113,6 +113,9 @@ if missing or not rows:
     sys.exit("docs/cost-report.md differs from scripts/cost-report.sh (run it with --write):\n" + "\n".join(missing))
 PY
 
+step "the desk tool's Monte Carlo benchmark runs (each case once, not timed)"
+cargo bench --quiet -p bounce-table --bench monte_carlo -- --test > /dev/null
+
 step "speed/accuracy trade pipeline runs (sweep, benchmarks in test mode, peer on one scene)"
 scripts/trade-report.sh --quick
 

@@ -12,7 +12,7 @@ use bounce_table::cli::parse;
 use bounce_table::output::{clash, identifier, render_to};
 use bounce_table::scenes::{open, Entries};
 use bounce_table::strict::printable;
-use bounce_table::{calibrate, eval, plot, replay, scene_input::SceneInput, table};
+use bounce_table::{calibrate, eval, plot, replay, table};
 
 /// Writes to standard output. A reader that stopped early (`bounce-table ... | head`) ends the
 /// run quietly with success, as it does for other command-line tools; any other failure to
@@ -474,15 +474,13 @@ fn main() -> ExitCode {
             let (Ok(entry), Ok(a)) = (entry, a) else {
                 continue;
             };
-            let Ok(input) = SceneInput::from_json(entry.template.nominal(), &entry.name) else {
-                continue;
-            };
+            let input = entry.template.nominal();
             let span = if a.nominal.bounce.is_finite() {
                 1.15 * a.nominal.bounce
             } else {
                 1e-3
             };
-            match plot::plots(&input, span) {
+            match plot::plots(input, span) {
                 Ok((envelope, motion)) => {
                     let stem = identifier(&entry.name).to_lowercase();
                     for (suffix, svg) in [("envelope", envelope), ("motion", motion)] {

@@ -66,7 +66,7 @@ pub fn catalogue() -> Vec<Entry> {
                 "damping_ratio": around(s.damping_ratio, r.damping_ratio),
                 "closing_speed": around(s.closing_speed, r.closing_speed),
             });
-            Template::parse(&scene).ok().map(|template| Entry {
+            Template::parse(&scene, s.name).ok().map(|template| Entry {
                 name: s.name.to_owned(),
                 template,
             })
@@ -93,7 +93,7 @@ fn entry_of(file: &str, index: usize, scene: Value) -> Result<Entry, FileError> 
             "a switch must be a table/object".to_owned(),
         ));
     }
-    match Template::from_value(scene) {
+    match Template::from_value(scene, &name) {
         Ok(template) => Ok(Entry { name, template }),
         Err(FieldError { field, message }) => Err(fault(field, message)),
     }
@@ -104,8 +104,7 @@ fn entry_of(file: &str, index: usize, scene: Value) -> Result<Entry, FileError> 
 /// # Errors
 /// The field at fault.
 pub fn check(entry: &Entry) -> Result<(), FieldError> {
-    crate::scene_input::SceneInput::from_json(entry.template.nominal(), &entry.name)?
-        .core::<f64>()?;
+    entry.template.nominal().core::<f64>()?;
     Ok(())
 }
 

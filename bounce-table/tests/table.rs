@@ -8,7 +8,6 @@ use std::process::{Command, Output};
 
 use bounce_table::analysis::{analyse, Settings};
 use bounce_table::eval::exact_outcome;
-use bounce_table::scene_input::SceneInput;
 use bounce_table::scenes::read;
 
 const BIN: &str = env!("CARGO_BIN_EXE_bounce-table");
@@ -220,8 +219,7 @@ fn the_percentile_window_covers_the_reference_for_fresh_samples() {
     let mut exceed = 0;
     let fresh = 2000;
     for i in 0..fresh {
-        let scene = entry.template.sample(99, i);
-        let input = SceneInput::from_json(&scene, "sample").expect("valid");
+        let input = entry.template.sample(99, i);
         let out = exact_outcome(&input).expect("reference");
         if out.end_time.expect("preload") > window {
             exceed += 1;
