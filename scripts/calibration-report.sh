@@ -43,8 +43,8 @@ longer than \`--quiet\` (0.2 s) inside holds several presses. The report says ho
 $report
 
 Plots (\`--plot docs/calibration\`): the observed bounce distribution of each switch and kind
-against the fitted model's (and the impact model's alone where it holds), in
-\`docs/calibration/\`.
+against the fitted model's (and the impact model's alone where it holds), on a log time axis,
+with the recommended window marked, in \`docs/calibration/\`.
 
 ### As a C header
 

@@ -134,7 +134,7 @@ all its tests, and the same rule fitted on the earlier half against the later ha
 $summary
 
 Plots (\`--plot docs/replay\`): false edges against latency P99 per switch and kind, ours and
-the peers, with the Pareto front, in \`docs/replay/\`.
+the peers, with the Pareto front and the rows on it named, in \`docs/replay/\`.
 MD
 )
 if [ "${1:-}" = "--write" ]; then

@@ -151,11 +151,17 @@ for path in ("README.md", "docs/eval-catalogue.md"):
         sys.exit(f"{path}: the eval table differs from scripts/eval-catalogue.sh's output")
 PY
 
-step "docs/calibration.md, docs/replay.md and the README's replay table are current (need the shared capture, ../shared/data)"
+step "docs/calibration.md, docs/replay.md, their plots and the README's replay table are current (need the shared capture, ../shared/data)"
 if [ -f ../shared/data/bouncy-button-uno.jsonl ]; then
   scripts/calibration-report.sh | diff - docs/calibration.md
   replay=$(scripts/replay-report.sh)
   diff <(printf '%s\n' "$replay") docs/replay.md
+  plots=$(mktemp -d)
+  cargo run --quiet --release -p bounce-table -- calibrate --plot "$plots/calibration" ../shared/data/bouncy-button-uno.jsonl > /dev/null
+  cargo run --quiet --release -p bounce-table -- replay --switch-type push-button --plot "$plots/replay" ../shared/data/bouncy-button-uno.jsonl > /dev/null
+  diff -r "$plots/calibration" docs/calibration
+  diff -r "$plots/replay" docs/replay
+  rm -rf "$plots"
   python3 - "$replay" <<'PY'
 import sys
 doc = sys.argv[1]
@@ -174,8 +180,11 @@ else
   echo "SKIPPED: no ../shared/data/bouncy-button-uno.jsonl on this machine (not part of the repository)"
 fi
 
-step "the README's bounce-table example is current"
-example=$(cargo run --quiet --release -p bounce-table -- bounce-table/scenes/example.toml)
+step "the README's bounce-table example and its plots (docs/plots) are current"
+plots=$(mktemp -d)
+example=$(cargo run --quiet --release -p bounce-table -- bounce-table/scenes/example.toml --plot "$plots")
+diff -r "$plots" docs/plots
+rm -rf "$plots"
 python3 - "$example" <<'PY'
 import sys
 if sys.argv[1].strip() not in open("README.md").read():

@@ -344,7 +344,7 @@ fn main() -> ExitCode {
                             identifier(switch).to_lowercase(),
                             kind.name()
                         );
-                        let svg = calibrate::plot(switch, *kind, d);
+                        let svg = calibrate::plot(switch, *kind, d, options.percentile);
                         if let Err(e) = std::fs::create_dir_all(dir)
                             .and_then(|()| write_atomically(&name, &svg))
                         {
@@ -475,12 +475,7 @@ fn main() -> ExitCode {
                 continue;
             };
             let input = entry.template.nominal();
-            let span = if a.nominal.bounce.is_finite() {
-                1.15 * a.nominal.bounce
-            } else {
-                1e-3
-            };
-            match plot::plots(input, span) {
+            match plot::plots(input, &a, settings.percentile) {
                 Ok((envelope, motion)) => {
                     let stem = identifier(&entry.name).to_lowercase();
                     for (suffix, svg) in [("envelope", envelope), ("motion", motion)] {

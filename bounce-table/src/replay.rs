@@ -37,6 +37,7 @@ use contact_bounce::{Mode, State, Windows};
 use crate::calibrate::{self, window};
 use crate::capture::{Event, Kind};
 use crate::output::time;
+use crate::plot::{Axis, Plot, Quantity, Series, Style};
 use crate::priors::{self, Prior};
 use contact_bounce_reference::stats::nearest_rank;
 
@@ -879,69 +880,70 @@ pub fn markdown(lines: &[Line]) -> String {
     out
 }
 
-/// The Pareto front of one switch and kind as an SVG: false edges against latency P99 (log10
-/// s), ours and the peers apart, the rows on the front named in the title.
+/// The Pareto front of one switch and kind as an SVG: false edges against latency P99 (log
+/// time axis), ours and the peers apart, the rows on the front named beside their points.
 #[must_use]
 pub fn plot(lines: &[&Line]) -> String {
     let point = |l: &&Line| {
         l.latency(0.99).map(|t| {
             #[allow(clippy::cast_precision_loss)]
             let f = l.score.false_edges as f64;
-            (t.max(1e-9).log10(), f)
+            (t.max(1e-9), f)
         })
     };
-    let ours: Vec<(f64, f64)> = lines
-        .iter()
-        .filter(|l| l.debouncer.starts_with("calibrated") || l.debouncer.starts_with("physics"))
-        .filter_map(point)
-        .collect();
+    let is_ours = |l: &&&Line| {
+        ["calibrated", "physics", "learned"]
+            .iter()
+            .any(|o| l.debouncer.starts_with(o))
+    };
+    let ours: Vec<(f64, f64)> = lines.iter().filter(is_ours).filter_map(point).collect();
     let theirs: Vec<(f64, f64)> = lines
         .iter()
-        .filter(|l| !(l.debouncer.starts_with("calibrated") || l.debouncer.starts_with("physics")))
+        .filter(|l| !is_ours(l))
         .filter_map(point)
         .collect();
-    // The front: no other row has both fewer false edges and a lower latency.
+    // The front: no other row has both fewer false edges and a lower latency. Rows that tie
+    // on a point are named together.
     let mut all: Vec<(&&Line, (f64, f64))> = lines
         .iter()
         .filter_map(|l| point(l).map(|p| (l, p)))
         .collect();
     all.sort_by(|a, b| a.1 .0.total_cmp(&b.1 .0).then(a.1 .1.total_cmp(&b.1 .1)));
     let mut front: Vec<(f64, f64)> = Vec::new();
-    let mut names = Vec::new();
+    let mut names: Vec<String> = Vec::new();
     for (l, p) in &all {
-        if front.last().is_none_or(|last| p.1 < last.1) {
-            front.push(*p);
-            names.push(l.debouncer.clone());
+        match front.last() {
+            Some(last) if *last == *p => {
+                if let Some(n) = names.last_mut() {
+                    n.push_str(", ");
+                    n.push_str(&l.debouncer);
+                }
+            }
+            Some(last) if p.1 >= last.1 => {}
+            _ => {
+                front.push(*p);
+                names.push(l.debouncer.clone());
+            }
         }
     }
     let (switch, kind) = lines
         .first()
         .map_or(("", "press"), |l| (l.switch.as_str(), l.kind.name()));
-    crate::plot::svg(
-        &format!("{switch} {kind}: front {}", names.join(", ")),
-        "log10 latency P99 (s)",
-        "false edges",
-        &[
-            crate::plot::Series {
-                label: "ours",
-                colour: "#2ca02c",
-                points: ours,
-                dots: true,
-            },
-            crate::plot::Series {
-                label: "peers",
-                colour: "#1f77b4",
-                points: theirs,
-                dots: true,
-            },
-            crate::plot::Series {
-                label: "Pareto front",
-                colour: "#d62728",
-                points: front,
-                dots: false,
-            },
+    let mut named = Series::new("", "#d62728", Style::Dots, front.clone());
+    named.names = names;
+    Plot {
+        title: format!("{switch} {kind}: false edges against latency"),
+        x: Axis::log("latency P99", Quantity::Time),
+        y: Axis::linear("false edges", Quantity::Count),
+        series: vec![
+            Series::new("Pareto front", "#d62728", Style::Steps, front),
+            Series::new("ours", "#2ca02c", Style::Dots, ours),
+            Series::new("peers", "#1f77b4", Style::Dots, theirs),
+            named,
         ],
-    )
+        markers: Vec::new(),
+    }
+    .svg()
 }
 
 /// How `replay` prints its rows.

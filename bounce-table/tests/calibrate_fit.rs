@@ -189,16 +189,25 @@ fn the_plot_draws_the_observed_and_the_modelled_distribution() {
     let events: Vec<Event> = (0..6).map(|i| press(0.7, 0.01, f64::from(i))).collect();
     let groups = group(&events, 1e-12, GAP);
     let ((switch, kind), d) = groups.iter().next().unwrap();
-    let svg = bounce_table::calibrate::plot(switch, *kind, d);
+    let svg = bounce_table::calibrate::plot(switch, *kind, d, 0.99);
     assert!(svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"));
     assert!(
         svg.contains("observed") && svg.contains("impact model") && svg.contains("fitted model"),
         "{svg}"
     );
+    // Data dots are translucent; the legend's is not.
     assert_eq!(
-        svg.matches("<circle").count(),
+        svg.matches("fill-opacity").count(),
         6,
         "one dot per bouncing event"
+    );
+    let window = bounce_table::calibrate::window(&d.iter().collect::<Vec<_>>(), 0.99);
+    assert!(
+        svg.contains(&format!(
+            "window {} (P99 of the fitted model)",
+            bounce_table::plot::time(window.recommended())
+        )),
+        "the window is marked: {svg}"
     );
 }
 

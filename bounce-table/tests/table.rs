@@ -255,6 +255,12 @@ fn plots_are_written() {
                     && svg.trim_end().ends_with("</svg>")
                     && svg.contains("polyline")
             );
+            // The end of the bounce and the window are marked (they are within a few bounce
+            // times of each other on these three).
+            assert!(
+                svg.contains("end of bounce") && svg.contains(">window "),
+                "{stem}-{kind}: {svg}"
+            );
         }
     }
 }

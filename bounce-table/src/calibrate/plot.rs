@@ -3,12 +3,14 @@
 use super::fit::{BounceModel, ImpactFit};
 use super::sorted;
 use crate::capture::{self, Kind};
+use crate::plot::{time, Axis, Marker, Plot, Quantity, Series, Style};
 
 /// The SVG of one switch and kind: the observed bounce's cumulative distribution against the
 /// fitted [`BounceModel`]'s and, where it holds, the impact model's alone (each event's first
-/// flight / (1 - R), fitted on all events), on a log10 time axis. Clean edges (no bounce) are left out and counted in the title.
+/// flight / (1 - R), fitted on all events), on a log time axis, with the window recommended
+/// at `percentile` (0..1) marked. Clean edges (no bounce) are left out and counted in the title.
 #[must_use]
-pub fn plot(switch: &str, kind: Kind, d: &[capture::Description]) -> String {
+pub fn plot(switch: &str, kind: Kind, d: &[capture::Description], percentile: f64) -> String {
     let refs: Vec<&capture::Description> = d.iter().collect();
     let fit = ImpactFit::new(&refs);
     let cdf = |v: Vec<f64>| -> Vec<(f64, f64)> {
@@ -20,7 +22,7 @@ pub fn plot(switch: &str, kind: Kind, d: &[capture::Description]) -> String {
             .map(|(i, t)| {
                 #[allow(clippy::cast_precision_loss)]
                 let rank = (i + 1) as f64;
-                (t.log10(), rank / n)
+                (*t, rank / n)
             })
             .collect()
     };
@@ -32,49 +34,46 @@ pub fn plot(switch: &str, kind: Kind, d: &[capture::Description]) -> String {
     let span = observed
         .first()
         .zip(observed.last())
-        .map(|(a, b)| (a.0 - 1.0, b.0 + 1.0));
+        .map(|(a, b)| (a.0.log10() - 1.0, b.0.log10() + 1.0));
     let curve: Option<Vec<(f64, f64)>> = span.and_then(|(a, b)| {
         (0..=200)
             .map(|i| {
                 let x = a + (b - a) * f64::from(i) / 200.0;
                 let p = fitted.cdf(10f64.powf(x))?;
-                Some((x, (p - fitted.clean) / (1.0 - fitted.clean)))
+                Some((10f64.powf(x), (p - fitted.clean) / (1.0 - fitted.clean)))
             })
             .collect()
     });
-    let mut series = vec![crate::plot::Series {
-        label: "observed",
-        colour: "#1f77b4",
-        points: observed,
-        dots: true,
-    }];
+    let mut series = vec![Series::new("observed", "#1f77b4", Style::Dots, observed)];
     // Where the flights do not shrink, R near 1 sends the impact model's sums off by decades:
     // drawn, it would only squash the axis.
     let modelled: Option<Vec<f64>> = refs.iter().map(|x| fit.bounce(x)).collect();
     if let Some(m) = modelled.filter(|_| fit.holds()) {
-        series.push(crate::plot::Series {
-            label: "impact model",
-            colour: "#d62728",
-            points: cdf(m),
-            dots: false,
-        });
+        series.push(Series::new("impact model", "#d62728", Style::Line, cdf(m)));
     }
     if let Some(points) = curve {
-        series.push(crate::plot::Series {
-            label: "fitted model",
-            colour: "#2ca02c",
-            points,
-            dots: false,
-        });
+        series.push(Series::new("fitted model", "#2ca02c", Style::Line, points));
     }
-    crate::plot::svg(
-        &format!(
+    let w = super::window(&refs, percentile);
+    let markers = vec![Marker {
+        x: w.recommended(),
+        label: format!(
+            "window {} (P{} of the fitted model)",
+            time(w.recommended()),
+            100.0 * percentile
+        ),
+        colour: "#ff7f0e",
+    }];
+    Plot {
+        title: format!(
             "{switch} {}: bounce CDF ({clean}/{} clean left out)",
             kind.name(),
             d.len()
         ),
-        "log10 bounce (s)",
-        "fraction of bouncing events",
-        &series,
-    )
+        x: Axis::log("bounce", Quantity::Time),
+        y: Axis::linear("fraction of bouncing events", Quantity::Plain),
+        series,
+        markers,
+    }
+    .svg()
 }
