@@ -43,6 +43,7 @@ cargo clippy -p contact-bounce --all-features --target thumbv7em-none-eabihf -- 
 step "rustdoc -D warnings"
 RUSTDOCFLAGS="-D warnings" cargo doc --quiet --no-deps -p contact-bounce --all-features
 RUSTDOCFLAGS="-D warnings" cargo doc --quiet --no-deps -p contact-bounce-c
+RUSTDOCFLAGS="-D warnings" cargo doc --quiet --no-deps -p bounce-table -p contact-bounce-reference
 
 step "no_std builds for every target and feature set"
 for target in "${targets[@]}"; do

@@ -13,7 +13,8 @@ pub struct Window {
     /// event, with the uncertainty of a fit to this many events (`None` when no part has a
     /// spread to fit).
     pub predictive: Option<f64>,
-    /// Bouncing events behind the fit (timed ones: see [`super::fit::bounces`]).
+    /// Bouncing events behind the fit (timed ones: a bounce shorter than the resolution counts
+    /// as clean).
     pub bouncing: usize,
 }
 
