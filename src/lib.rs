@@ -36,6 +36,7 @@ mod mechanisms;
 mod method;
 mod orbit;
 mod prediction;
+mod preloaded;
 mod quadrature;
 mod regime;
 mod scene;
@@ -58,6 +59,7 @@ pub use mechanisms::{
 pub use method::{Method, Tolerance};
 pub use orbit::{Orbit, OrbitPoint};
 pub use prediction::{Approximations, ClosedForm, Count, Prediction, Tier, Time};
+pub use preloaded::Preloaded;
 pub use quadrature::Nodes;
 pub use regime::Regime;
 pub use scene::{

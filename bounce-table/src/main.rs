@@ -60,6 +60,19 @@ Prints predicted bounce and debounce windows: for the built-in catalogue of typi
 (.toml with [[switch]] tables, .json, or .jsonl; the keys of `eval`, and any number may be a
 range: {min = a, max = b} or {value = x, spread = s}).
 
+Scene keys (SI units; where to get each: docs/parameters.md in the repository):
+  omega, or mass and stiffness    the natural frequency sqrt(stiffness / mass) (rad/s; kg, N/m)
+  gap or preload_force            where the stop is: gap > 0 m, the contacts apart at rest;
+                                  preload_force > 0 N, the spring presses them together
+                                  (Delta = -preload_force / stiffness < 0)
+  restitution                     R, the share of speed an impact keeps, in (0, 1]
+  closing_speed                   the speed at first contact (m/s)
+  damping_ratio                   viscous zeta (0 when absent)
+  threshold_impulse, threshold_fraction
+                                  where an endless bounce counts as ended
+  kernel = {kappa, tau, state}, two_body = {m1, c1, d1, m2, c2, d2, x2, v2}
+                                  a relaxation kernel; two bodies (the paper's Eq. 1)
+
 Options (every subcommand also takes -h/--help, -V/--version, and --option=value):
   --period SECONDS     tick period of the windows (default 1e-4)
   --format FORMAT      table, markdown, csv, json, c (a header) or rust (constants)

@@ -226,3 +226,86 @@ fn const_window_matches_the_runtime_one() {
         Error::new(Parameter::Mass, Reason::NotANumber)
     );
 }
+
+/// `Preloaded` is the long path in one call: the same window as building the scene, predicting
+/// and widening by hand, for every catalogue switch, tier and float; and every invalid input
+/// is the typed error the long path gives.
+#[test]
+fn a_preloaded_switch_gives_the_long_paths_window_and_errors() {
+    use contact_bounce::{catalogue, Margin, Method, Nodes, Parameter, Preloaded, Window};
+    fn long<F: contact_bounce::Float>(
+        p: &Preloaded<F>,
+        method: Method<F>,
+    ) -> Result<Window, contact_bounce::Error> {
+        let scene = contact_bounce::Scene::new(
+            p.contact(),
+            contact_bounce::Viscous::new(p.damping_ratio)?,
+        )?;
+        let prediction = scene.predict(method);
+        let margin = Margin::new(F::from_f64(1.5), F::ZERO)?.with_expected_error(&prediction);
+        Window::from_prediction(&prediction, &margin, F::from_f64(1e-6))
+    }
+    for s in catalogue::ALL {
+        for method in [
+            Method::Closed,
+            Method::Averaged(Nodes::N8),
+            Method::Map {
+                max_impacts: 100_000,
+            },
+        ] {
+            let p = s.preloaded::<f64>();
+            assert_eq!(p.window(method, 1.5, 1e-6), long(&p, method), "{}", s.name);
+            let method32 = match method {
+                Method::Closed => Method::Closed,
+                Method::Averaged(n) => Method::Averaged(n),
+                _ => Method::Map {
+                    max_impacts: 100_000,
+                },
+            };
+            let p32 = s.preloaded::<f32>();
+            assert_eq!(
+                p32.window(method32, 1.5, 1e-6),
+                long(&p32, method32),
+                "{}",
+                s.name
+            );
+        }
+    }
+    let dome = catalogue::TACTILE_DOME.preloaded::<f32>();
+    let cases = [
+        (
+            Preloaded {
+                preload_force: -1.0,
+                ..dome
+            },
+            Parameter::PreloadForce,
+        ),
+        (
+            Preloaded {
+                damping_ratio: f32::NAN,
+                ..dome
+            },
+            Parameter::DampingRatio,
+        ),
+        (
+            Preloaded {
+                restitution: 1.5,
+                ..dome
+            },
+            Parameter::Restitution,
+        ),
+        (Preloaded { mass: 0.0, ..dome }, Parameter::Mass),
+    ];
+    for (p, parameter) in cases {
+        let e = p.window(Method::Closed, 1.5, 1e-5).expect_err("invalid");
+        assert_eq!(e.parameter(), parameter, "{p:?}: {e}");
+    }
+    let margin = dome
+        .window(Method::Closed, 0.5, 1e-5)
+        .expect_err("margin below 1");
+    assert_eq!(margin.parameter(), Parameter::MarginFactor);
+    let period = dome
+        .window(Method::Closed, 1.5, 0.0)
+        .expect_err("no period");
+    assert_eq!(period.parameter(), Parameter::SamplePeriod);
+}
