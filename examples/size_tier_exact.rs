@@ -9,7 +9,7 @@ mod body;
 
 #[cfg(target_os = "none")]
 mod firmware {
-    use contact_bounce::{Method, EXACT_MAX_IMPACTS};
+    use contact_bounce::{tiers::EXACT_MAX_IMPACTS, Method};
     use core::hint::black_box;
     use cortex_m as _;
     use panic_halt as _;

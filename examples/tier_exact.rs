@@ -16,7 +16,7 @@ mod firmware;
 fn work() {
     firmware::measure(|scene| {
         firmware::window(&scene.predict(contact_bounce::Method::Exact {
-            max_impacts: contact_bounce::EXACT_MAX_IMPACTS,
+            max_impacts: contact_bounce::tiers::EXACT_MAX_IMPACTS,
         }))
     });
 }

@@ -16,7 +16,7 @@ mod firmware;
 fn work() {
     firmware::measure(|scene| {
         firmware::window(&scene.predict(contact_bounce::Method::Map {
-            max_impacts: contact_bounce::DEFAULT_MAX_IMPACTS,
+            max_impacts: contact_bounce::tiers::DEFAULT_MAX_IMPACTS,
         }))
     });
 }

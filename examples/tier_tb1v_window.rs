@@ -28,7 +28,7 @@ fn work() {
     ];
     firmware::measure_without_scene(|| {
         let [m, k, f, v, r, z] = core::hint::black_box(INPUTS);
-        contact_bounce::preload_viscous_bounce_time(m, k, f, v, r, z)
+        contact_bounce::tiers::preload_viscous_bounce_time(m, k, f, v, r, z)
             .and_then(|e| {
                 contact_bounce::Window::from_seconds(
                     e.time,

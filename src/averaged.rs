@@ -18,7 +18,7 @@ use crate::{accuracy, Float, Scene};
 /// The averaged model of a scene, integrated with a given number of nodes per panel.
 ///
 /// ```
-/// use contact_bounce::{Averaged, Contact, Frequency, Nodes, Offset, Restitution, Scene, Threshold, Undamped};
+/// use contact_bounce::{tiers::Averaged, Contact, Frequency, Nodes, Offset, Restitution, Scene, Threshold, Undamped};
 /// let scene = Scene::new(Contact {
 ///     frequency: Frequency::Omega(1000.0_f64), offset: Offset::Delta(-1e-3),
 ///     restitution: Restitution::Coefficient(0.9), closing_speed: 0.01, threshold: Threshold::None,

@@ -78,7 +78,7 @@ pub(crate) fn log_growth_of_ratio<F: Float>(num: F, den: F, k: F) -> F {
 /// (within 2.5 % plus the atan linearisation for j0 <= 1; `None` beyond).
 ///
 /// ```
-/// use contact_bounce::{catalogue, preload_viscous_bounce_time};
+/// use contact_bounce::{catalogue, tiers::preload_viscous_bounce_time};
 /// let d = catalogue::TACTILE_DOME;
 /// let lean = preload_viscous_bounce_time(
 ///     d.mass, d.stiffness, d.preload_force, d.closing_speed, d.restitution, d.damping_ratio,
@@ -92,7 +92,7 @@ pub(crate) fn log_growth_of_ratio<F: Float>(num: F, den: F, k: F) -> F {
 /// # Errors
 /// As [`Scene::new`] for these inputs: [`Parameter::Mass`], [`Parameter::Stiffness`],
 /// [`Parameter::PreloadForce`] or [`Parameter::ClosingSpeed`] outside
-/// [`PHYSICAL_RANGE`](crate::PHYSICAL_RANGE); [`Parameter::Restitution`] outside
+/// [`PHYSICAL_RANGE`](crate::scene::PHYSICAL_RANGE); [`Parameter::Restitution`] outside
 /// [1e-6, 1 - 1e-12]; [`Parameter::DampingRatio`] negative, below 1e-12 but not 0, or above
 /// 1e3; [`Parameter::ClosingSpeed`] with [`Reason::Overflow`] for a first impulse below
 /// [`Scene::impulse_floor`] or Omega (1 + R) v0 above the float's largest value over 2^17;

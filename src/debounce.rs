@@ -1,7 +1,7 @@
 //! A debouncer on a physics window: integer-only per sample, 2 bytes of state per pin.
 //!
 //! The window comes from a prediction ([`Window::from_prediction`]) or from the compile-time
-//! [`crate::window_ticks`], in samples of a period the caller chooses (never assumed here).
+//! [`crate::window::window_ticks`], in samples of a period the caller chooses (never assumed here).
 //! Press (make) and release (break) windows are separate: release bounce differs.
 //!
 //! Two ways to use a window:
@@ -200,7 +200,7 @@ impl State {
 /// (the windows are in those samples).
 ///
 /// ```
-/// use contact_bounce::{Debouncer, Edge, Mode, Polarity, Windows};
+/// use contact_bounce::{Debouncer, Edge, Mode, debounce::Polarity, Windows};
 /// use embedded_hal_mock::eh1::digital::{Mock, State as Level, Transaction};
 /// // An active-low button: reads high (open), then bounces low/high, then stays low.
 /// let levels = [Level::High, Level::Low, Level::High, Level::Low, Level::Low, Level::Low];

@@ -428,7 +428,7 @@ impl LearningState {
 /// [`crate::learn`]), sampled by the caller at a period of its choosing.
 ///
 /// ```
-/// use contact_bounce::{Edge, LearningDebouncer, Mode, Polarity, Windows};
+/// use contact_bounce::{Edge, LearningDebouncer, Mode, debounce::Polarity, Windows};
 /// use embedded_hal_mock::eh1::digital::{Mock, State as Level, Transaction};
 /// let levels = [Level::High, Level::Low, Level::High, Level::Low, Level::Low];
 /// let mut pin = Mock::new(&levels.map(|l| Transaction::get(l)));

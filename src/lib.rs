@@ -1,4 +1,51 @@
-#![doc = include_str!("../README.md")]
+//! Predict mechanical contact bounce from physics, and turn the prediction into a debounce
+//! window: `no_std`, allocation-free, panic-free, generic over `f32` and `f64`.
+//!
+//! A switch, relay or contactor bounces after its contacts first meet, for microseconds (reed,
+//! MEMS) to a hundred milliseconds (contactors). This crate computes how long from the contact's
+//! mechanics (its mass and stiffness, its preload or gap, its coefficient of restitution, its
+//! damping and its closing speed) with Krupenin's averaging method for vibro-impact systems, at
+//! several levels of cost and accuracy, and gives the window a debouncer needs, in whole
+//! sampling periods. `docs/physics.md` in the repository states the model, its formulas and the
+//! accuracy of each tier; `docs/parameters.md` says where to get each parameter.
+//!
+//! ```
+//! use contact_bounce::{Method, Preloaded};
+//!
+//! // A tactile dome: 50 mg moving on 5 N/mm, held by 1 N, closing at 0.5 m/s.
+//! let dome = Preloaded {
+//!     mass: 5e-5_f32, stiffness: 5000.0, preload_force: 1.0,
+//!     closing_speed: 0.5, restitution: 0.7, damping_ratio: 0.03,
+//! };
+//! let window = dome.window(Method::Closed, 1.5, 10e-6)?; // +50 %, 10 us samples
+//! assert_eq!(window.ticks(), 18);
+//! # Ok::<(), contact_bounce::Error>(())
+//! ```
+//!
+//! # Where things are
+//!
+//! - [`scene`]: what a switch is. [`Scene`] is validated once from a [`Contact`] and the
+//!   mechanisms that dissipate between impacts ([`Undamped`], [`Viscous`], [`Hereditary`]);
+//!   after [`Scene::new`] succeeds nothing can fail, panic or return NaN. [`Preloaded`] is the
+//!   short path for the common preloaded switch, [`catalogue`] holds typical switches.
+//! - [`tiers`]: how to predict. [`Scene::predict`] with a [`Method`]: the closed forms
+//!   (nanoseconds), the averaged model, the per-impact map, the exact solution, or
+//!   [`Method::Auto`], the cheapest tier that promises a [`Tolerance`]. Each gives a
+//!   [`Prediction`] with its expected error.
+//! - [`window`]: from a prediction to a [`Window`] in ticks, widened by a [`Margin`]; also as
+//!   `const fn`, so a window can be fixed at compile time.
+//! - [`debounce`]: a [`Debouncer`] on such windows (2 bytes of [`State`] per pin, integer-only),
+//!   and [`learn`]: a [`LearningDebouncer`] that learns its own switch from a prior window.
+//! - [`model`]: the parts of the averaged model (the generating orbit, the averaged equation's
+//!   terms) for those who build on them.
+//!
+//! Every invalid input is an [`Error`] naming the [`Parameter`] and the [`Reason`].
+//!
+//! # Features
+//!
+//! None is on by default. `micromath`: `f32` through micromath's small, fast approximations
+//! instead of libm (less flash, a few percent of error: see [`Float`]); `f64` always uses libm.
+//! `defmt`: `defmt::Format` on the public types, for logging from firmware.
 #![no_std]
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
@@ -34,36 +81,30 @@ pub mod learn;
 mod map;
 mod mechanisms;
 mod method;
+pub mod model;
 mod orbit;
 mod prediction;
 mod preloaded;
 mod quadrature;
 mod regime;
-mod scene;
-mod window;
+pub mod scene;
+pub mod tiers;
+pub mod window;
 
-pub use averaged::{Averaged, Bodies, EnvelopePoint, Motion};
-pub use closed::{preload_viscous_bounce_time, Estimate};
-pub use debounce::{Debouncer, Edge, Mode, Polarity, State, Windows};
-pub use error::{Error, Parameter, Reason, PHYSICAL_RANGE};
-pub use exact::{EXACT_MAX_IMPACTS, ROOT_STEPS};
-pub use float::{Float, F32_BACKEND};
-pub use learn::{
-    Learned, LearningDebouncer, LearningState, Tail, LATE_EVIDENCE, LATE_GAP, WARM_UP,
-};
-pub use map::{Impact, MapEnd, MapImpacts, DEFAULT_MAX_IMPACTS};
-pub use mechanisms::{
-    restitution_rate, AnyDissipation, Asymptote, Dissipation, HarmonicSum, Hereditary, Undamped,
-    Viscous,
-};
+// The names most programs need, at the root; everything else in its module.
+pub use debounce::{Debouncer, Edge, Mode, State, Windows};
+pub use error::{Error, Parameter, Reason};
+pub use float::Float;
+pub use learn::{LearningDebouncer, LearningState};
+pub use mechanisms::{Hereditary, Undamped, Viscous};
 pub use method::{Method, Tolerance};
-pub use orbit::{Orbit, OrbitPoint};
-pub use prediction::{Approximations, ClosedForm, Count, Prediction, Tier, Time};
+pub use prediction::Prediction;
 pub use preloaded::Preloaded;
 pub use quadrature::Nodes;
-pub use regime::Regime;
-pub use scene::{
-    Contact, Frequency, Offset, Reduction, Restitution, Scene, Threshold, TwoBody, LARGEST_DAMPING,
-    SMALLEST_RATE, SMALLEST_RESTITUTION,
-};
-pub use window::{preload_bounce_time, window_ticks, LeadingOrder, Margin, Window};
+pub use scene::{Contact, Frequency, Offset, Restitution, Scene, Threshold};
+pub use window::{Margin, Window};
+
+/// The README's examples, compiled and run as doctests (the crate's docs are the ones above).
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

@@ -65,7 +65,7 @@ pub enum MapEnd<F> {
 /// flight exactly and goes on.
 ///
 /// ```
-/// use contact_bounce::{catalogue, MapImpacts};
+/// use contact_bounce::{catalogue, tiers::MapImpacts};
 /// let dome = catalogue::TACTILE_DOME.scene::<f32>()?;
 /// let first: Vec<_> = MapImpacts::new(&dome, 100).take(3).collect();
 /// assert_eq!(first[0].time, 0.0);

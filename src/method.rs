@@ -47,9 +47,9 @@ pub enum Method<F> {
     /// [`Scene::exact_work`] for the bound on its work). Its expected error is the float's
     /// rounding. Scenes without viscous damping or with Delta = 0 get the closed tier's exact
     /// sums; with a relaxation kernel it answers with the averaged model (20 nodes), whose
-    /// [`Tier`](crate::Tier) and expected error say so.
+    /// [`Tier`](crate::tiers::Tier) and expected error say so.
     Exact {
-        /// Cap on solved flights ([`EXACT_MAX_IMPACTS`](crate::EXACT_MAX_IMPACTS) is the
+        /// Cap on solved flights ([`EXACT_MAX_IMPACTS`](crate::tiers::EXACT_MAX_IMPACTS) is the
         /// default).
         max_impacts: u32,
     },
@@ -58,7 +58,7 @@ pub enum Method<F> {
     /// promises the float's rounding on every one-body scene without a kernel. Where nothing
     /// does (a kernel; f32 over very many impacts; a return decided by rounding) the smallest
     /// expected error wins: check [`Prediction::promises`]. Its worst-case work is the exact
-    /// tier's at [`EXACT_MAX_IMPACTS`](crate::EXACT_MAX_IMPACTS)
+    /// tier's at [`EXACT_MAX_IMPACTS`](crate::tiers::EXACT_MAX_IMPACTS)
     /// ([`Scene::exact_work`]); firmware that cannot afford that names a tier, or
     /// `Method::Exact` with a smaller cap.
     Auto(Tolerance<F>),

@@ -11,7 +11,7 @@ use crate::Float;
 /// The generating orbit of a contact with natural frequency Omega and offset Delta.
 ///
 /// ```
-/// use contact_bounce::Orbit;
+/// use contact_bounce::model::Orbit;
 /// // A preload of 1 mm at Omega = 1000 rad/s, generating impulse 1 m/s (j = J/(Omega|Delta|) = 1).
 /// let orbit = Orbit::new(1000.0_f64, -1e-3);
 /// let p = orbit.at(1.0);

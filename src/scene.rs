@@ -1,12 +1,21 @@
-//! The description of one contact event, validated once: docs/physics.md sec. 1.
+//! What a switch is: one contact event, validated once (`docs/physics.md` sec. 1).
+//!
+//! A [`Scene`] is built from a [`Contact`] (frequency, offset, restitution, closing speed,
+//! threshold) and the mechanisms that dissipate between impacts: [`Undamped`], [`Viscous`],
+//! [`Hereditary`] or a tuple of them ([`AnyDissipation`] when chosen at run time). The
+//! mechanisms are part of the type, so a switch without viscous damping does not link it.
+//! [`Scene::two_body`] reduces the paper's two bodies; [`Preloaded`] is the short path for a
+//! preloaded switch. Validation limits: [`PHYSICAL_RANGE`], [`SMALLEST_RATE`],
+//! [`SMALLEST_RESTITUTION`], [`LARGEST_DAMPING`].
+
+pub use crate::error::PHYSICAL_RANGE;
+pub use crate::mechanisms::{AnyDissipation, Dissipation, Hereditary, Undamped, Viscous};
+pub use crate::preloaded::Preloaded;
+pub use crate::regime::Regime;
 
 use crate::error::{derived, finite, non_negative, physical, Error, Parameter, Reason};
-use crate::mechanisms::{
-    restitution::restitution_asymptote, restitution_rate, AnyDissipation, Asymptote, Dissipation,
-    Hereditary, Undamped, Viscous,
-};
+use crate::mechanisms::{restitution::restitution_asymptote, restitution_rate, Asymptote};
 use crate::orbit::{Orbit, OrbitPoint};
-use crate::regime::Regime;
 use crate::Float;
 
 /// Where the contact's natural frequency comes from.
@@ -70,7 +79,7 @@ pub enum Threshold<F> {
 ///     threshold: Threshold::None,
 /// };
 /// let scene = Scene::new(contact, Undamped)?;
-/// assert_eq!(scene.regime(), contact_bounce::Regime::ZenoAccumulation);
+/// assert_eq!(scene.regime(), contact_bounce::scene::Regime::ZenoAccumulation);
 /// # Ok::<(), contact_bounce::Error>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -121,10 +121,10 @@ impl Window {
     }
 }
 
-/// [`check`], and within [`crate::PHYSICAL_RANGE`] (as `Scene::new` asks of dimensional inputs).
+/// [`check`], and within [`crate::scene::PHYSICAL_RANGE`] (as `Scene::new` asks of dimensional inputs).
 const fn physical(value: f64, parameter: Parameter) -> Result<f64, Error> {
     match check(value, parameter) {
-        Ok(v) if v < crate::PHYSICAL_RANGE.0 || v > crate::PHYSICAL_RANGE.1 => {
+        Ok(v) if v < crate::scene::PHYSICAL_RANGE.0 || v > crate::scene::PHYSICAL_RANGE.1 => {
             Err(Error::new(parameter, Reason::OutOfRange))
         }
         other => other,
@@ -159,7 +159,7 @@ pub struct LeadingOrder {
 /// compile error when unwrapped with `match`/`panic!`).
 ///
 /// ```
-/// use contact_bounce::preload_bounce_time;
+/// use contact_bounce::window::preload_bounce_time;
 /// // The tactile dome of docs/physics.md sec. 7: 2 * 0.7 * 0.5 * 5e-5 / (0.3 * 1.0) s.
 /// const DOME: f64 = match preload_bounce_time(5e-5, 5000.0, 1.0, 0.5, 0.7) {
 ///     Ok(t) => t.seconds,
@@ -170,8 +170,8 @@ pub struct LeadingOrder {
 ///
 /// # Errors
 /// The offending parameter when NaN, infinite or not positive, outside
-/// [`crate::PHYSICAL_RANGE`], or R outside [`crate::SMALLEST_RESTITUTION`] to 1 -
-/// [`crate::SMALLEST_RATE`]: the inputs `Scene::new` refuses.
+/// [`crate::scene::PHYSICAL_RANGE`], or R outside [`crate::scene::SMALLEST_RESTITUTION`] to 1 -
+/// [`crate::scene::SMALLEST_RATE`]: the inputs `Scene::new` refuses.
 pub const fn preload_bounce_time(
     mass: f64,
     stiffness: f64,
@@ -223,7 +223,7 @@ pub const fn preload_bounce_time(
 /// ceil(factor * seconds / sample_period) as `u32` ticks, `const` and checked.
 ///
 /// ```
-/// use contact_bounce::window_ticks;
+/// use contact_bounce::window::window_ticks;
 /// const TICKS: u32 = match window_ticks(1.2e-3, 1.5, 0.5e-3) {
 ///     Ok(t) => t,
 ///     Err(_) => panic!("window does not fit"),

@@ -5,7 +5,7 @@
 
 use std::sync::atomic::{AtomicU64, Ordering};
 
-use contact_bounce::{Method, Nodes, Prediction, Regime, Tolerance};
+use contact_bounce::{scene::Regime, Method, Nodes, Prediction, Tolerance};
 use contact_bounce_reference::stats::nearest_rank_unsorted;
 
 use crate::eval::exact_outcome;
@@ -80,9 +80,9 @@ pub(crate) fn regime_name(r: Regime) -> &'static str {
 
 fn tier_name(p: &Prediction<f64>) -> String {
     match p.tier {
-        contact_bounce::Tier::Averaged(n) => format!("averaged N{}", n.count()),
-        contact_bounce::Tier::Closed(form) => format!("closed ({form:?})"),
-        contact_bounce::Tier::Map => "map".to_owned(),
+        contact_bounce::tiers::Tier::Averaged(n) => format!("averaged N{}", n.count()),
+        contact_bounce::tiers::Tier::Closed(form) => format!("closed ({form:?})"),
+        contact_bounce::tiers::Tier::Map => "map".to_owned(),
         other => format!("{other:?}").to_lowercase(),
     }
 }

@@ -9,8 +9,8 @@
 use std::io::{BufRead, Write};
 
 use contact_bounce::{
-    Count, Dissipation, Float, MapImpacts, Method as CoreMethod, Nodes, Prediction, Time,
-    Tolerance, DEFAULT_MAX_IMPACTS,
+    scene::Dissipation, tiers::Count, tiers::MapImpacts, tiers::Time, tiers::DEFAULT_MAX_IMPACTS,
+    Float, Method as CoreMethod, Nodes, Prediction, Tolerance,
 };
 use contact_bounce_reference::{self as reference, OneBody};
 use serde_json::{json, Value};
@@ -188,7 +188,7 @@ fn core_result<F: Float>(input: &SceneInput, options: &Options) -> Result<Value,
         Method::Averaged => CoreMethod::Averaged(options.nodes),
         Method::Closed => CoreMethod::Closed,
         Method::Tier => CoreMethod::Exact {
-            max_impacts: contact_bounce::EXACT_MAX_IMPACTS,
+            max_impacts: contact_bounce::tiers::EXACT_MAX_IMPACTS,
         },
         Method::Auto | Method::Exact => CoreMethod::Auto(
             Tolerance::new(F::from_f64(options.tolerance)).map_err(FieldError::from)?,
@@ -201,7 +201,7 @@ fn core_result<F: Float>(input: &SceneInput, options: &Options) -> Result<Value,
     let rounding = restitution_rounding::<F>(input.restitution);
     let expected = p.expected_error.map(|e| e.to_f64() + rounding);
     // The averaged tier counts in real numbers; the others in whole impacts.
-    let whole = !matches!(p.tier, contact_bounce::Tier::Averaged(_));
+    let whole = !matches!(p.tier, contact_bounce::tiers::Tier::Averaged(_));
     let first = if options.method == Method::Map {
         let impacts: Vec<Value> = MapImpacts::new(&scene, DEFAULT_MAX_IMPACTS)
             .take(5)
@@ -213,9 +213,9 @@ fn core_result<F: Float>(input: &SceneInput, options: &Options) -> Result<Value,
     };
     let approximate = p
         .approximations
-        .contains(contact_bounce::Approximations::TWO_BODY_RAYLEIGH)
+        .contains(contact_bounce::tiers::Approximations::TWO_BODY_RAYLEIGH)
         || p.approximations
-            .contains(contact_bounce::Approximations::OUTSIDE_VALIDITY);
+            .contains(contact_bounce::tiers::Approximations::OUTSIDE_VALIDITY);
     let mut out = json!({
         "name": input.name,
         "method": options.method.name(),

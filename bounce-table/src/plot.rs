@@ -7,7 +7,7 @@
 
 use std::fmt::Write as _;
 
-use contact_bounce::Bodies;
+use contact_bounce::tiers::Bodies;
 
 use crate::analysis::{Analysis, PLOT_NODES};
 use crate::eval::exact_outcome;
@@ -543,7 +543,7 @@ pub fn plots(
             omega: scene.omega(),
             delta: scene.delta(),
             restitution: r,
-            zeta: contact_bounce::Dissipation::damping_ratio(scene.dissipation()),
+            zeta: contact_bounce::scene::Dissipation::damping_ratio(scene.dissipation()),
             closing_speed: scene.closing_speed(),
             threshold: scene.threshold_impulse(),
         };

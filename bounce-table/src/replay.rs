@@ -504,7 +504,7 @@ pub fn ours(label: &str, press: f64, release: f64, period: f64, kind: Kind) -> O
     // The core's rounding (up); a window of 0 (every test clean) is one sample.
     let ticks = |w: f64| -> Option<u16> {
         let t = if w > 0.0 {
-            contact_bounce::window_ticks(w, 1.0, period).ok()?
+            contact_bounce::window::window_ticks(w, 1.0, period).ok()?
         } else {
             1
         };
@@ -690,7 +690,7 @@ pub struct Learning {
 /// # Errors
 /// The prior does not fit [`Windows::MAX_TICKS`] samples of `period`.
 pub fn learned(events: &[&Event], prior: f64, s: &Settings) -> Result<Learning, String> {
-    let ticks = contact_bounce::window_ticks(prior, 1.0, s.period)
+    let ticks = contact_bounce::window::window_ticks(prior, 1.0, s.period)
         .ok()
         .and_then(|t| u16::try_from(t).ok())
         .filter(|t| *t <= Windows::MAX_TICKS)

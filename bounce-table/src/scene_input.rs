@@ -1,8 +1,8 @@
 //! Scenes as JSON objects (the keys of `eval`, SI units), checked field by field.
 
 use contact_bounce::{
-    AnyDissipation, Contact, Frequency, Hereditary, Offset, Restitution, Scene, Threshold, TwoBody,
-    Viscous,
+    scene::AnyDissipation, scene::TwoBody, Contact, Frequency, Hereditary, Offset, Restitution,
+    Scene, Threshold, Viscous,
 };
 use serde_json::{Map, Value};
 
@@ -388,7 +388,8 @@ impl SceneInput {
 /// What the model takes for a parameter it can refuse as out of range, in a scene file's terms.
 fn accepted(parameter: contact_bounce::Parameter) -> Option<String> {
     use contact_bounce::{
-        Parameter as P, LARGEST_DAMPING, PHYSICAL_RANGE, SMALLEST_RATE, SMALLEST_RESTITUTION,
+        scene::LARGEST_DAMPING, scene::PHYSICAL_RANGE, scene::SMALLEST_RATE,
+        scene::SMALLEST_RESTITUTION, Parameter as P,
     };
     let (lo, hi) = PHYSICAL_RANGE;
     Some(match parameter {

@@ -3,9 +3,9 @@
 //! The switches and samples are those of `examples/c/switches.h`.
 
 use contact_bounce::{
-    preload_viscous_bounce_time, Contact, Edge, Error, Frequency, Margin, Method, Mode, Nodes,
-    Offset, Prediction, Restitution, Scene, State, Threshold, Tolerance, Viscous, Window, Windows,
-    DEFAULT_MAX_IMPACTS, EXACT_MAX_IMPACTS,
+    tiers::preload_viscous_bounce_time, tiers::DEFAULT_MAX_IMPACTS, tiers::EXACT_MAX_IMPACTS,
+    Contact, Edge, Error, Frequency, Margin, Method, Mode, Nodes, Offset, Prediction, Restitution,
+    Scene, State, Threshold, Tolerance, Viscous, Window, Windows,
 };
 
 /// mass, stiffness, offset, R, zeta, closing speed, threshold fraction (0: none).

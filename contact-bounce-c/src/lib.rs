@@ -23,9 +23,10 @@
 #![allow(non_camel_case_types)]
 
 use contact_bounce::{
-    preload_viscous_bounce_time, Contact, Edge, Error, Frequency, Margin, Method, Mode, Nodes,
-    Offset, Parameter, Prediction, Reason, Regime, Restitution, Scene, State, Threshold, Tier,
-    Tolerance, Viscous, Window, Windows, DEFAULT_MAX_IMPACTS, EXACT_MAX_IMPACTS,
+    scene::Regime, tiers::preload_viscous_bounce_time, tiers::Tier, tiers::DEFAULT_MAX_IMPACTS,
+    tiers::EXACT_MAX_IMPACTS, Contact, Edge, Error, Frequency, Margin, Method, Mode, Nodes, Offset,
+    Parameter, Prediction, Reason, Restitution, Scene, State, Threshold, Tolerance, Viscous,
+    Window, Windows,
 };
 
 /// A panic cannot happen (the core and this crate have no panicking path); on a bare-metal

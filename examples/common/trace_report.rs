@@ -5,7 +5,7 @@
 pub mod data;
 
 use contact_bounce::{
-    catalogue, Debouncer, Margin, Method, Mode, Polarity, Tolerance, Window, Windows,
+    catalogue, debounce::Polarity, Debouncer, Margin, Method, Mode, Tolerance, Window, Windows,
 };
 use core::convert::Infallible;
 use core::fmt::Write;

@@ -200,7 +200,7 @@ pub fn methods() -> [contact_bounce::Method<f64>; 7] {
             max_impacts: 10_000_000,
         },
         Method::Exact {
-            max_impacts: contact_bounce::EXACT_MAX_IMPACTS,
+            max_impacts: contact_bounce::tiers::EXACT_MAX_IMPACTS,
         },
     ]
 }
@@ -211,7 +211,7 @@ pub fn methods() -> [contact_bounce::Method<f64>; 7] {
 /// When the core refuses the scene or the reference fails, as a message.
 pub fn compare(scene: &GridScene) -> Result<Vec<Row>, String> {
     use crate::reference::{simulate, Regime as R, DEFAULT_BUDGET};
-    use contact_bounce::Regime;
+    use contact_bounce::scene::Regime;
     let core = scene
         .core()
         .map_err(|e| format!("{}: core: {e}", scene.name))?;
@@ -324,10 +324,10 @@ impl TwoBodyScene {
     /// When the core refuses the scene.
     pub fn core(
         &self,
-    ) -> Result<Scene<f64, contact_bounce::AnyDissipation<f64>>, contact_bounce::Error> {
+    ) -> Result<Scene<f64, contact_bounce::scene::AnyDissipation<f64>>, contact_bounce::Error> {
         let r = &self.reference;
         Scene::two_body(
-            contact_bounce::TwoBody {
+            contact_bounce::scene::TwoBody {
                 m1: r.m[0],
                 c1: r.c[0],
                 d1: r.d[0],

@@ -104,11 +104,11 @@ fn the_exact_tier_reproduces_the_reference_to_1e_9() {
     for scene in &scenes {
         let Ok(core) = scene.core() else { continue };
         let p = core.predict(Method::Exact {
-            max_impacts: contact_bounce::EXACT_MAX_IMPACTS,
+            max_impacts: contact_bounce::tiers::EXACT_MAX_IMPACTS,
         });
-        if p.tier != contact_bounce::Tier::Exact
+        if p.tier != contact_bounce::tiers::Tier::Exact
             || p.approximations
-                .contains(contact_bounce::Approximations::MAP_CONTINUED_AVERAGED)
+                .contains(contact_bounce::tiers::Approximations::MAP_CONTINUED_AVERAGED)
         {
             continue;
         }
@@ -149,7 +149,7 @@ fn the_exact_tier_in_f32_keeps_its_expected_error() {
     for scene in grid().into_iter().chain(off_grid(2_000, 0x0f32_0f32)) {
         let Ok(core) = scene.core_f32() else { continue };
         let p = core.predict(Method::Exact {
-            max_impacts: contact_bounce::EXACT_MAX_IMPACTS,
+            max_impacts: contact_bounce::tiers::EXACT_MAX_IMPACTS,
         });
         let (Some(e), Some(c)) = (p.expected_error, p.bounce_time()) else {
             continue;
@@ -240,7 +240,7 @@ fn a_preload_with_a_tiny_first_impulse_is_resolved_and_exact() {
                 .core()
                 .expect("valid");
             let p = scene.predict(Method::Exact {
-                max_impacts: contact_bounce::EXACT_MAX_IMPACTS,
+                max_impacts: contact_bounce::tiers::EXACT_MAX_IMPACTS,
             });
             let (t, c) = (
                 truth.end_time.expect("ends"),
@@ -272,7 +272,7 @@ fn the_map_counts_a_bouncing_balls_impacts_exactly() {
             .core()
             .expect("valid");
         let p = scene.predict(Method::Map {
-            max_impacts: contact_bounce::DEFAULT_MAX_IMPACTS,
+            max_impacts: contact_bounce::tiers::DEFAULT_MAX_IMPACTS,
         });
         #[allow(clippy::cast_precision_loss)]
         let count = truth.impacts_above.expect("counted") as f64;
@@ -293,7 +293,7 @@ fn the_map_solves_the_flights_whose_first_order_loss_exceeds_their_impulse() {
     // (zeta 0.5 and 0.9, j0 = 10) reported 1 impact above the threshold, at 0, where there
     // are 7-8. Such a flight is now solved exactly and the map goes on from its return.
     use host_tests::reference::{simulate, OneBody, DEFAULT_BUDGET};
-    let max_impacts = contact_bounce::DEFAULT_MAX_IMPACTS;
+    let max_impacts = contact_bounce::tiers::DEFAULT_MAX_IMPACTS;
     // Gaps: every flight stalls, so every flight is exact: the same count, the same end.
     for r in [0.5, 0.7, 0.9] {
         for v0 in [100.0, 1000.0] {
@@ -376,7 +376,7 @@ fn the_f32_map_agrees_with_the_f64_map_below_the_f32_tail_cutoff() {
         #[allow(clippy::cast_possible_truncation)]
         let narrow_zeta = zeta as f32;
         let narrow = Scene::new(narrow, Viscous::new(narrow_zeta).expect("valid")).expect("valid");
-        let max_impacts = contact_bounce::DEFAULT_MAX_IMPACTS;
+        let max_impacts = contact_bounce::tiers::DEFAULT_MAX_IMPACTS;
         let a = wide.predict(Method::Map { max_impacts });
         let b = narrow.predict(Method::Map { max_impacts });
         assert_eq!(

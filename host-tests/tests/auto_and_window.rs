@@ -2,8 +2,8 @@
 //! when none does; windows round up, check every conversion and refuse endless predictions.
 
 use contact_bounce::{
-    catalogue, ClosedForm, Contact, Error, Frequency, Margin, Method, Nodes, Offset, Parameter,
-    Reason, Restitution, Scene, Threshold, Tier, Tolerance, Undamped, Viscous, Window,
+    catalogue, tiers::ClosedForm, tiers::Tier, Contact, Error, Frequency, Margin, Method, Nodes,
+    Offset, Parameter, Reason, Restitution, Scene, Threshold, Tolerance, Undamped, Viscous, Window,
 };
 
 fn preload(r: f64, zeta: f64, j0: f64) -> Scene<f64, Viscous<f64>> {
@@ -82,7 +82,7 @@ fn the_exact_tier_states_its_work_bound_before_it_runs() {
     let p = dome.predict(Method::Exact { max_impacts: 3 });
     assert!(p
         .approximations
-        .contains(contact_bounce::Approximations::MAP_CONTINUED_AVERAGED));
+        .contains(contact_bounce::tiers::Approximations::MAP_CONTINUED_AVERAGED));
 }
 
 #[test]
@@ -110,7 +110,7 @@ fn auto_says_when_it_cannot_promise() {
             max_impacts: 100_000,
         },
         Method::Exact {
-            max_impacts: contact_bounce::EXACT_MAX_IMPACTS,
+            max_impacts: contact_bounce::tiers::EXACT_MAX_IMPACTS,
         },
     ];
     let best = candidates
@@ -197,7 +197,7 @@ fn the_expected_error_widens_the_window() {
 
 #[test]
 fn const_window_matches_the_runtime_one() {
-    const T: f64 = match contact_bounce::preload_bounce_time(5e-5, 5000.0, 1.0, 0.5, 0.7) {
+    const T: f64 = match contact_bounce::window::preload_bounce_time(5e-5, 5000.0, 1.0, 0.5, 0.7) {
         Ok(t) => t.seconds,
         Err(_) => panic!(),
     };
@@ -207,22 +207,22 @@ fn const_window_matches_the_runtime_one() {
         let runtime =
             Window::from_seconds(seconds, &Margin::new(factor, 0.0).unwrap(), period).unwrap();
         assert_eq!(
-            contact_bounce::window_ticks(seconds, factor, period),
+            contact_bounce::window::window_ticks(seconds, factor, period),
             Ok(runtime.ticks())
         );
     }
     assert_eq!(
-        contact_bounce::window_ticks(1e10, 1.0, 1e-3),
+        contact_bounce::window::window_ticks(1e10, 1.0, 1e-3),
         Err(Error::new(Parameter::SamplePeriod, Reason::Overflow))
     );
     assert_eq!(
-        contact_bounce::preload_bounce_time(5e-5, 5000.0, 1.0, 0.5, 1.0)
+        contact_bounce::window::preload_bounce_time(5e-5, 5000.0, 1.0, 0.5, 1.0)
             .unwrap_err()
             .parameter(),
         Parameter::Restitution
     );
     assert_eq!(
-        contact_bounce::preload_bounce_time(f64::NAN, 5000.0, 1.0, 0.5, 0.5).unwrap_err(),
+        contact_bounce::window::preload_bounce_time(f64::NAN, 5000.0, 1.0, 0.5, 0.5).unwrap_err(),
         Error::new(Parameter::Mass, Reason::NotANumber)
     );
 }

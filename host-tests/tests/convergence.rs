@@ -2,8 +2,8 @@
 //! the envelope inverts t(J); the tiers agree with each other where docs/physics.md says they must.
 
 use contact_bounce::{
-    Bodies, Contact, Count, Frequency, Method, Nodes, Offset, Regime, Restitution, Scene,
-    Threshold, Time, TwoBody, Undamped, Viscous,
+    scene::Regime, scene::TwoBody, tiers::Bodies, tiers::Count, tiers::Time, Contact, Frequency,
+    Method, Nodes, Offset, Restitution, Scene, Threshold, Undamped, Viscous,
 };
 
 const OMEGA: f64 = 2000.0;
@@ -26,7 +26,10 @@ fn rel(a: f64, b: f64) -> f64 {
     ((a - b) / b).abs()
 }
 
-fn averaged_end<D: contact_bounce::Dissipation<f64>>(scene: &Scene<f64, D>, nodes: Nodes) -> f64 {
+fn averaged_end<D: contact_bounce::scene::Dissipation<f64>>(
+    scene: &Scene<f64, D>,
+    nodes: Nodes,
+) -> f64 {
     scene
         .predict(Method::Averaged(nodes))
         .bounce_time()
@@ -300,10 +303,10 @@ fn map_hands_over_to_averaged_past_its_cap() {
     });
     assert!(capped
         .approximations
-        .contains(contact_bounce::Approximations::MAP_CONTINUED_AVERAGED));
+        .contains(contact_bounce::tiers::Approximations::MAP_CONTINUED_AVERAGED));
     assert!(!full
         .approximations
-        .contains(contact_bounce::Approximations::MAP_CONTINUED_AVERAGED));
+        .contains(contact_bounce::tiers::Approximations::MAP_CONTINUED_AVERAGED));
     assert!(rel(capped.bounce_time().unwrap(), full.bounce_time().unwrap()) < 0.01);
 }
 
@@ -394,7 +397,7 @@ fn two_bodies_with_unequal_frequencies_are_flagged() {
         let p = s.predict(Method::Averaged(Nodes::N8));
         assert!(p
             .approximations
-            .contains(contact_bounce::Approximations::TWO_BODY_RAYLEIGH));
+            .contains(contact_bounce::tiers::Approximations::TWO_BODY_RAYLEIGH));
         assert_eq!(p.expected_error.is_some(), expected_known, "{p:?}");
     }
 }

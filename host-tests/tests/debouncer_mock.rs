@@ -1,7 +1,7 @@
 //! The embedded-hal debouncer against mocked pins: polarity, both modes, both edges, and pin
 //! errors passed through without touching the state.
 
-use contact_bounce::{Debouncer, Edge, Mode, Polarity, Windows};
+use contact_bounce::{debounce::Polarity, Debouncer, Edge, Mode, Windows};
 use embedded_hal::digital::ErrorKind;
 use embedded_hal_mock::eh1::digital::{Mock, State as Level, Transaction};
 use embedded_hal_mock::eh1::MockError;
@@ -104,7 +104,7 @@ fn pin_errors_pass_through_and_leave_the_state_alone() {
 
 #[test]
 fn the_learning_debouncer_passes_pin_errors_through_and_restores_what_it_learned() {
-    use contact_bounce::{Learned, LearningDebouncer, Tail};
+    use contact_bounce::{learn::Learned, learn::Tail, LearningDebouncer};
     let expectations = [
         Transaction::get(Level::High),
         Transaction::get(Level::Low).with_error(MockError::Io(std::io::ErrorKind::Other)),

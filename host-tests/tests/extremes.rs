@@ -4,8 +4,8 @@
 //! time is finite and non-negative or explicitly endless, and counts likewise.
 
 use contact_bounce::{
-    Contact, Count, Float, Frequency, Method, Nodes, Offset, Prediction, Restitution, Scene,
-    Threshold, Time, Tolerance, Viscous,
+    tiers::Count, tiers::Time, Contact, Float, Frequency, Method, Nodes, Offset, Prediction,
+    Restitution, Scene, Threshold, Tolerance, Viscous,
 };
 
 fn sane<F: Float>(p: &Prediction<F>, what: &str) {

@@ -9,9 +9,9 @@
 //! sets the number of scenes per float (CI: the default, 10,000; `scripts/fuzz.sh`: millions).
 
 use contact_bounce::{
-    Averaged, Bodies, Contact, Count, Float, Frequency, Hereditary, LearningState, MapImpacts,
-    Method, Mode, Nodes, Offset, Prediction, Restitution, Scene, State, Threshold, Time, Tolerance,
-    TwoBody, Viscous, Windows,
+    scene::TwoBody, tiers::Averaged, tiers::Bodies, tiers::Count, tiers::MapImpacts, tiers::Time,
+    Contact, Float, Frequency, Hereditary, LearningState, Method, Mode, Nodes, Offset, Prediction,
+    Restitution, Scene, State, Threshold, Tolerance, Viscous, Windows,
 };
 
 struct Rng(u64);
@@ -206,7 +206,7 @@ fn predictions<F: Float + std::fmt::Debug>(rng: &mut Rng, n: usize) -> (usize, V
 
 /// Every check on one accepted scene: the map walked impact by impact, the closed forms, the
 /// envelope and the laws of motion at times from 0 to far past the end, and every tier.
-fn check_scene<F: Float + std::fmt::Debug, D: contact_bounce::Dissipation<F>>(
+fn check_scene<F: Float + std::fmt::Debug, D: contact_bounce::scene::Dissipation<F>>(
     scene: &Scene<F, D>,
     what: &str,
     checked: &mut usize,
@@ -431,7 +431,7 @@ fn raw_inputs<F: Float + std::fmt::Debug>(
     n: usize,
     from_bits: impl Fn(u64) -> F + Copy,
 ) -> (usize, usize, Vec<String>) {
-    use contact_bounce::{preload_viscous_bounce_time, Margin, Window};
+    use contact_bounce::{tiers::preload_viscous_bounce_time, Margin, Window};
     let (mut accepted, mut checked, mut faults) = (0, 0, Vec::new());
     let number = |x: F| x.is_finite() && x >= F::ZERO;
     for _ in 0..n {
@@ -508,14 +508,14 @@ fn raw_inputs<F: Float + std::fmt::Debug>(
     for _ in 0..n {
         let mut v = || raw(rng, f64::from_bits);
         let (m, k, f, s, r, w) = (v(), v(), v(), v(), v(), v());
-        if let Ok(t) = contact_bounce::preload_bounce_time(m, k, f, s, r) {
+        if let Ok(t) = contact_bounce::window::preload_bounce_time(m, k, f, s, r) {
             if !(t.seconds.is_finite() && t.seconds > 0.0) {
                 faults.push(format!(
                     "preload_bounce_time {t:?} of {m:e} {k:e} {f:e} {s:e} {r}"
                 ));
             }
         }
-        if let Ok(ticks) = contact_bounce::window_ticks(m, k, w) {
+        if let Ok(ticks) = contact_bounce::window::window_ticks(m, k, w) {
             if m > 0.0 && k > 0.0 && ticks == 0 {
                 faults.push(format!("window_ticks({m:e}, {k:e}, {w:e}) = 0"));
             }

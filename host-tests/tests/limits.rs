@@ -3,8 +3,8 @@
 //! hereditary sum reducing to the viscous formula when Gs = 2 zeta Omega nu.
 
 use contact_bounce::{
-    Contact, Count, Dissipation, Frequency, Hereditary, Method, Nodes, Offset, Orbit, Restitution,
-    Scene, Threshold, Time, Undamped, Viscous,
+    model::Orbit, scene::Dissipation, tiers::Count, tiers::Time, Contact, Frequency, Hereditary,
+    Method, Nodes, Offset, Restitution, Scene, Threshold, Undamped, Viscous,
 };
 
 const OMEGA: f64 = 1000.0;
@@ -395,9 +395,9 @@ fn the_averaged_hereditary_end_is_not_limited_by_the_harmonic_cut() {
 
 #[test]
 fn regimes_follow_the_table_of_section_4() {
-    use contact_bounce::Regime::*;
+    use contact_bounce::scene::Regime::*;
     let th = Threshold::FractionOfFirst(0.01);
-    let cases: [(f64, f64, f64, contact_bounce::Regime); 10] = [
+    let cases: [(f64, f64, f64, contact_bounce::scene::Regime); 10] = [
         (-1e-3, 0.3, 0.0, ZenoAccumulation),
         (-1e-3, 0.3, 0.5, ZenoAccumulation),
         (-1e-3, 0.3, 1.5, ZenoAccumulation),

@@ -3,8 +3,8 @@
 //! predicts without NaN in every tier. Random realistic scenes likewise.
 
 use contact_bounce::{
-    Contact, Count, Float, Frequency, Hereditary, Margin, Method, Nodes, Offset, Prediction,
-    Restitution, Scene, Threshold, Time, Tolerance, TwoBody, Viscous, Window,
+    scene::TwoBody, tiers::Count, tiers::Time, Contact, Float, Frequency, Hereditary, Margin,
+    Method, Nodes, Offset, Prediction, Restitution, Scene, Threshold, Tolerance, Viscous, Window,
 };
 use proptest::prelude::*;
 
@@ -183,9 +183,9 @@ proptest! {
             }
         }
         prop_assert_eq!(Tolerance::new(a).is_ok(), a.is_finite() && a > 0.0);
-        let leading = contact_bounce::preload_bounce_time(a, b, c, d, 0.5);
+        let leading = contact_bounce::window::preload_bounce_time(a, b, c, d, 0.5);
         prop_assert!(leading.is_err() || leading.is_ok_and(|l| l.seconds.is_finite() && l.seconds > 0.0));
-        let ticks = contact_bounce::window_ticks(a, b, c);
+        let ticks = contact_bounce::window::window_ticks(a, b, c);
         prop_assert!(ticks.is_err() || (a.is_finite() && b >= 1.0 && c > 0.0));
     }
 

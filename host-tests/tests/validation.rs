@@ -1,8 +1,8 @@
 //! Every invalid input of the core issue's item 1 returns its typed error, naming the parameter.
 
 use contact_bounce::{
-    Contact, Error, Frequency, Hereditary, Margin, Offset, Parameter, Reason, Restitution, Scene,
-    Threshold, Tolerance, TwoBody, Undamped, Viscous, Window,
+    scene::TwoBody, Contact, Error, Frequency, Hereditary, Margin, Offset, Parameter, Reason,
+    Restitution, Scene, Threshold, Tolerance, Undamped, Viscous, Window,
 };
 
 const BAD: [(f64, Reason); 3] = [
@@ -575,7 +575,7 @@ fn the_model_domain_is_enforced() {
 
 #[test]
 fn the_lean_t_b1v_agrees_with_the_scenes_and_refuses_what_the_scene_refuses() {
-    use contact_bounce::{catalogue, preload_viscous_bounce_time};
+    use contact_bounce::{catalogue, tiers::preload_viscous_bounce_time};
     for d in catalogue::ALL {
         let lean = preload_viscous_bounce_time(
             d.mass,
@@ -677,7 +677,7 @@ fn a_first_impulse_below_the_floor_is_refused() {
         (Parameter::ClosingSpeed, Reason::Overflow)
     );
     // The lean closed form takes the same domain.
-    let lean = contact_bounce::preload_viscous_bounce_time(
+    let lean = contact_bounce::tiers::preload_viscous_bounce_time(
         1000.0_f32,
         1e-30,
         1.0,

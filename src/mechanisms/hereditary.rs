@@ -24,7 +24,7 @@ use crate::Float;
 /// averaging itself is within ~0.3 % of exact simulation (docs/physics.md sec. 6).
 ///
 /// ```
-/// use contact_bounce::{Dissipation, Hereditary, Orbit, Viscous};
+/// use contact_bounce::{scene::Dissipation, Hereditary, model::Orbit, Viscous};
 /// // A kernel with tau -> 0 and kappa tau^2 = 2 zeta Omega acts as viscous damping (it departs
 /// // from it by (k omega tau)^2 over the ~2000 harmonics a 1e-7 tolerance sums).
 /// let (omega, zeta, tau) = (1000.0_f64, 0.02, 1e-12);

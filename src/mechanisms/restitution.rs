@@ -10,7 +10,7 @@ use crate::Float;
 /// T = 2 theta / Omega this is that form for every sign of Delta.
 ///
 /// ```
-/// use contact_bounce::{restitution_rate, Orbit};
+/// use contact_bounce::{model::restitution_rate, model::Orbit};
 /// let orbit = Orbit::new(100.0_f64, 0.0); // Delta = 0: T = pi / Omega
 /// let rate = restitution_rate(0.1, &orbit.at(2.0));
 /// assert!((rate + 0.1 * 2.0 * 100.0 / core::f64::consts::PI).abs() < 1e-12);

@@ -15,7 +15,7 @@ use crate::Float;
 /// J > 0 and does not underflow before J does.
 ///
 /// ```
-/// use contact_bounce::{Dissipation, Orbit, Viscous};
+/// use contact_bounce::{scene::Dissipation, model::Orbit, Viscous};
 /// let viscous = Viscous::new(0.01_f64)?;
 /// // Delta = 0: theta = pi/2 and the rate is exactly -zeta Omega J.
 /// let rate = viscous.rate(&Orbit::new(100.0, 0.0).at(3.0));

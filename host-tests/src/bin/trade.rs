@@ -8,7 +8,7 @@
 
 use std::collections::BTreeMap;
 
-use contact_bounce::{Method, Nodes, Prediction, F32_BACKEND};
+use contact_bounce::{model::F32_BACKEND, Method, Nodes, Prediction};
 use host_tests::grid::grid;
 use host_tests::reference::{simulate, Outcome, Regime, DEFAULT_BUDGET};
 use host_tests::stats::nearest_rank;
@@ -30,7 +30,7 @@ fn methods<F: contact_bounce::Float>() -> Vec<(&'static str, Method<F>)> {
         (
             "exact",
             Method::Exact {
-                max_impacts: contact_bounce::EXACT_MAX_IMPACTS,
+                max_impacts: contact_bounce::tiers::EXACT_MAX_IMPACTS,
             },
         ),
     ]

@@ -1,0 +1,22 @@
+//! How to predict: the tiers of [`Scene::predict`](crate::Scene::predict) and what they return.
+//!
+//! | [`Method`] | what it evaluates | cost (host, f64) |
+//! |---|---|---|
+//! | `Closed` | the closed forms t_b1, t_b1v, t_b2 (and their corrected forms) | tens of ns |
+//! | `Averaged(nodes)` | the averaged equation J' = E1(J), integrated by Gauss-Legendre | a few us |
+//! | `Map { max_impacts }` | the averaged model impact by impact | about 1 us |
+//! | `Exact { max_impacts }` | the exact solution, flight by flight | a few us |
+//! | `Auto(tolerance)` | the cheapest of them whose expected error meets the tolerance | as the tier chosen |
+//!
+//! Each gives a [`Prediction`]: the regime, the end of the bounce or the last impact above a
+//! threshold, impact counts, the first impacts, the [`Tier`] that answered and its expected
+//! error. `docs/physics.md` sec. 6 and `docs/trade-report.md` in the repository give each
+//! tier's measured accuracy and cost.
+
+pub use crate::averaged::{Averaged, Bodies, EnvelopePoint, Motion};
+pub use crate::closed::{preload_viscous_bounce_time, Estimate};
+pub use crate::exact::{EXACT_MAX_IMPACTS, ROOT_STEPS};
+pub use crate::map::{Impact, MapEnd, MapImpacts, DEFAULT_MAX_IMPACTS};
+pub use crate::method::{Method, Tolerance};
+pub use crate::prediction::{Approximations, ClosedForm, Count, Prediction, Tier, Time};
+pub use crate::quadrature::Nodes;
