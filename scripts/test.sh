@@ -84,7 +84,7 @@ cortex-m-rt = "0.7"
 panic-halt = "1"
 TOML
 printf '[target.thumbv7m-none-eabi]\nrustflags = ["-C", "link-arg=-Tlink.x"]\n' > "$app/.cargo/config.toml"
-printf '#![no_std]\n#![no_main]\nuse panic_halt as _;\n#[cortex_m_rt::entry]\nfn main() -> ! {\n    let _ = contact_bounce::window_ticks(1e-3, 1.5, 1e-4);\n    loop {}\n}\n' > "$app/src/main.rs"
+printf '#![no_std]\n#![no_main]\nuse panic_halt as _;\n#[cortex_m_rt::entry]\nfn main() -> ! {\n    let _ = contact_bounce::window::window_ticks(1e-3, 1.5, 1e-4);\n    loop {}\n}\n' > "$app/src/main.rs"
 if (cd "$app" && cargo build --quiet --release --target thumbv7m-none-eabi > "$app/log" 2>&1); then
   echo "FAIL: a dependent firmware without memory.x linked (it was given ours)" >&2
   exit 1
