@@ -107,16 +107,6 @@ impl<F: Float> Orbit<F> {
         let local = p.time_in_period(t);
         p.hypot() * F::HALF * (self.omega * local - p.phase).sin_within_pi()
     }
-
-    /// chi(t) = cos(Omega (t - T/2)) / (2 Omega sin(Omega T / 2)) (the paper's Eq. 3 with its
-    /// missing brackets restored), T-periodic, so that x(t) = -J chi(t).
-    #[must_use]
-    pub fn chi(&self, impulse: F, t: F) -> F {
-        let p = self.at(impulse);
-        let local = p.time_in_period(t);
-        // 1 / (2 Omega sin theta) = h / (2 Omega J)
-        (self.omega * local - p.phase).cos_within_pi() * p.hypot() / (F::TWO * self.omega * impulse)
-    }
 }
 
 impl<F: Float> OrbitPoint<F> {

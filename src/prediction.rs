@@ -50,8 +50,6 @@ impl<F: Float> Count<F> {
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[non_exhaustive]
 pub enum ClosedForm {
-    /// t_b1 = J_B / (r Omega^2 |Delta|): preload, restitution only.
-    Tb1,
     /// t_b1v = (3 / (2 zeta Omega)) ln(1 + 2 zeta J_B / (3 r Omega |Delta|)): preload, viscous.
     Tb1v,
     /// t_b2 = J_B^2 / (8 zeta Omega^3 Delta^2): gap, viscous, R = 1.
@@ -81,6 +79,35 @@ pub enum Tier {
     Map,
     /// The exact event-driven solution (flights in closed form, returns solved to rounding).
     Exact,
+}
+
+impl ClosedForm {
+    /// Its name as the physics docs write it: `Tb1v`, `Tb2`, `Tb2r`, `Asymptotic`, `Grazing`,
+    /// `Undamped`.
+    #[must_use]
+    pub const fn name(self) -> &'static str {
+        match self {
+            Self::Tb1v => "Tb1v",
+            Self::Tb2 => "Tb2",
+            Self::Tb2r => "Tb2r",
+            Self::Asymptotic => "Asymptotic",
+            Self::Grazing => "Grazing",
+            Self::Undamped => "Undamped",
+        }
+    }
+}
+
+/// The tier's name in reports: `regime`, `closed (Tb1v)`, `averaged N8`, `map`, `exact`.
+impl core::fmt::Display for Tier {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            Self::Regime => f.write_str("regime"),
+            Self::Closed(form) => write!(f, "closed ({})", form.name()),
+            Self::Averaged(nodes) => write!(f, "averaged N{}", nodes.count()),
+            Self::Map => f.write_str("map"),
+            Self::Exact => f.write_str("exact"),
+        }
+    }
 }
 
 /// Approximations made on the way to a prediction (a small bit set).
@@ -119,11 +146,6 @@ impl Approximations {
     #[must_use]
     pub const fn is_empty(self) -> bool {
         self.0 == 0
-    }
-    /// The raw bits.
-    #[must_use]
-    pub const fn bits(self) -> u8 {
-        self.0
     }
 }
 

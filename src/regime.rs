@@ -26,6 +26,19 @@ pub enum Regime {
 }
 
 impl Regime {
+    /// Its name in reports and files: `zeno_accumulation`, `last_impact`, `endless`,
+    /// `periodic`, `single_impact` (also its `Display`).
+    #[must_use]
+    pub const fn name(self) -> &'static str {
+        match self {
+            Self::ZenoAccumulation => "zeno_accumulation",
+            Self::LastImpact => "last_impact",
+            Self::Endless => "endless",
+            Self::Periodic => "periodic",
+            Self::SingleImpact => "single_impact",
+        }
+    }
+
     /// True when the bounce never ends by itself ([`Endless`](Regime::Endless) or
     /// [`Periodic`](Regime::Periodic)).
     #[must_use]
@@ -56,5 +69,11 @@ impl Regime {
             // Delta = 0 with any loss: exact exponential decay.
             _ => Self::Endless,
         }
+    }
+}
+
+impl core::fmt::Display for Regime {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(self.name())
     }
 }

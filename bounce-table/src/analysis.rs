@@ -5,7 +5,7 @@
 
 use std::sync::atomic::{AtomicU64, Ordering};
 
-use contact_bounce::{scene::Regime, Method, Nodes, Prediction, Tolerance};
+use contact_bounce::{Method, Nodes, Prediction, Tolerance};
 use contact_bounce_reference::stats::nearest_rank_unsorted;
 
 use crate::eval::exact_outcome;
@@ -66,27 +66,6 @@ pub struct Estimate {
     pub expected_error: f64,
 }
 
-/// The regime's name in the outputs (snake case).
-pub(crate) fn regime_name(r: Regime) -> &'static str {
-    match r {
-        Regime::ZenoAccumulation => "zeno_accumulation",
-        Regime::LastImpact => "last_impact",
-        Regime::Endless => "endless",
-        Regime::Periodic => "periodic",
-        Regime::SingleImpact => "single_impact",
-        _ => "unknown",
-    }
-}
-
-fn tier_name(p: &Prediction<f64>) -> String {
-    match p.tier {
-        contact_bounce::tiers::Tier::Averaged(n) => format!("averaged N{}", n.count()),
-        contact_bounce::tiers::Tier::Closed(form) => format!("closed ({form:?})"),
-        contact_bounce::tiers::Tier::Map => "map".to_owned(),
-        other => format!("{other:?}").to_lowercase(),
-    }
-}
-
 fn endless() -> FieldError {
     FieldError {
         field: "threshold".to_owned(),
@@ -141,19 +120,13 @@ pub fn estimate(input: &SceneInput, tolerance: f64) -> Result<Estimate, FieldErr
         Answer::Model(p) => Estimate {
             bounce,
             upper,
-            regime: regime_name(p.regime).to_owned(),
+            regime: p.regime.name().to_owned(),
             impacts: p.impacts_above.value(),
-            tier: tier_name(&p),
+            tier: p.tier.to_string(),
             expected_error: p.expected_error.unwrap_or(0.0),
         },
         Answer::Exact(out) => {
-            let regime = match out.regime {
-                contact_bounce_reference::Regime::ZenoAccumulation => "zeno_accumulation",
-                contact_bounce_reference::Regime::LastImpact => "last_impact",
-                contact_bounce_reference::Regime::Endless => "endless",
-                contact_bounce_reference::Regime::Periodic => "periodic",
-                contact_bounce_reference::Regime::SingleImpact => "single_impact",
-            };
+            let regime = out.regime.name();
             #[allow(clippy::cast_precision_loss)]
             let impacts = out.impacts_above.map(|n| n as f64);
             Estimate {

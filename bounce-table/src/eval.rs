@@ -15,7 +15,6 @@ use contact_bounce::{
 use contact_bounce_reference::{self as reference, OneBody};
 use serde_json::{json, Value};
 
-use crate::analysis::regime_name;
 use crate::scene_input::{FieldError, SceneInput, Spring};
 
 /// The tier asked for.
@@ -219,7 +218,7 @@ fn core_result<F: Float>(input: &SceneInput, options: &Options) -> Result<Value,
     let mut out = json!({
         "name": input.name,
         "method": options.method.name(),
-        "regime": regime_name(p.regime),
+        "regime": p.regime.name(),
         "end_time": time(p.end_time),
         "impacts_total": count(p.impacts_total, whole),
         "last_above_time": time(p.last_above_time),
@@ -302,13 +301,7 @@ pub fn exact_outcome(input: &SceneInput) -> Result<reference::Outcome, FieldErro
 
 fn exact_result(input: &SceneInput) -> Result<Value, FieldError> {
     let out = exact_outcome(input)?;
-    let regime = match out.regime {
-        reference::Regime::ZenoAccumulation => "zeno_accumulation",
-        reference::Regime::LastImpact => "last_impact",
-        reference::Regime::Endless => "endless",
-        reference::Regime::Periodic => "periodic",
-        reference::Regime::SingleImpact => "single_impact",
-    };
+    let regime = out.regime.name();
     Ok(json!({
         "name": input.name,
         "method": "exact",

@@ -343,6 +343,19 @@ impl SceneInput {
         };
         let restitution = Restitution::Coefficient(c("restitution", self.restitution)?);
         let v0 = c("closing_speed", self.closing_speed)?;
+        let one_body = |frequency: Frequency<F>| -> Result<_, FieldError> {
+            let viscous = Some(
+                Viscous::new(c("damping_ratio", self.damping_ratio)?).map_err(|e| self.fault(e))?,
+            );
+            let contact = Contact {
+                frequency,
+                offset,
+                restitution,
+                closing_speed: v0,
+                threshold,
+            };
+            Scene::new(contact, (viscous, kernel)).map_err(|e| self.fault(e))
+        };
         let scene = match self.stiffness {
             Spring::TwoBody(b, _, _) => {
                 let bodies = TwoBody {
@@ -356,30 +369,11 @@ impl SceneInput {
                 Scene::two_body(bodies, offset, restitution, v0, threshold, kernel)
                     .map_err(|e| self.fault(e))?
             }
-            Spring::Omega(_) | Spring::MassStiffness(..) => {
-                let frequency = match self.stiffness {
-                    Spring::MassStiffness(m, k) => Frequency::MassStiffness {
-                        mass: c("mass", m)?,
-                        stiffness: c("stiffness", k)?,
-                    },
-                    Spring::Omega(w) | Spring::TwoBody(_, w, _) => Frequency::Omega(c("omega", w)?),
-                };
-                let viscous = Some(
-                    Viscous::new(c("damping_ratio", self.damping_ratio)?)
-                        .map_err(|e| self.fault(e))?,
-                );
-                Scene::new(
-                    Contact {
-                        frequency,
-                        offset,
-                        restitution,
-                        closing_speed: v0,
-                        threshold,
-                    },
-                    (viscous, kernel),
-                )
-                .map_err(|e| self.fault(e))?
-            }
+            Spring::Omega(w) => one_body(Frequency::Omega(c("omega", w)?))?,
+            Spring::MassStiffness(m, k) => one_body(Frequency::MassStiffness {
+                mass: c("mass", m)?,
+                stiffness: c("stiffness", k)?,
+            })?,
         };
         Ok(scene)
     }

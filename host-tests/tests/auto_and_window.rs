@@ -309,3 +309,41 @@ fn a_preloaded_switch_gives_the_long_paths_window_and_errors() {
         .expect_err("no period");
     assert_eq!(period.parameter(), Parameter::SamplePeriod);
 }
+
+/// Regime and tier names come from the core alone (`name`, `Display`), as every report writes
+/// them; the reference's regimes are named the same.
+#[test]
+fn regimes_and_tiers_have_one_name_each() {
+    use contact_bounce::scene::Regime;
+    use contact_bounce::tiers::{ClosedForm, Tier};
+    use contact_bounce::Nodes;
+    use host_tests::reference::Regime as Exact;
+    let pairs = [
+        (
+            Regime::ZenoAccumulation,
+            Exact::ZenoAccumulation,
+            "zeno_accumulation",
+        ),
+        (Regime::LastImpact, Exact::LastImpact, "last_impact"),
+        (Regime::Endless, Exact::Endless, "endless"),
+        (Regime::Periodic, Exact::Periodic, "periodic"),
+        (Regime::SingleImpact, Exact::SingleImpact, "single_impact"),
+    ];
+    for (core, exact, name) in pairs {
+        assert_eq!(
+            (core.name(), core.to_string(), exact.name()),
+            (name, name.to_owned(), name)
+        );
+    }
+    let tiers = [
+        (Tier::Regime, "regime"),
+        (Tier::Closed(ClosedForm::Tb1v), "closed (Tb1v)"),
+        (Tier::Closed(ClosedForm::Tb2r), "closed (Tb2r)"),
+        (Tier::Averaged(Nodes::N8), "averaged N8"),
+        (Tier::Map, "map"),
+        (Tier::Exact, "exact"),
+    ];
+    for (tier, name) in tiers {
+        assert_eq!(tier.to_string(), name);
+    }
+}

@@ -74,6 +74,20 @@ pub enum Regime {
     SingleImpact,
 }
 
+impl Regime {
+    /// Its name in reports and files, as the core's `Regime::name` writes it.
+    #[must_use]
+    pub const fn name(self) -> &'static str {
+        match self {
+            Self::ZenoAccumulation => "zeno_accumulation",
+            Self::LastImpact => "last_impact",
+            Self::Endless => "endless",
+            Self::Periodic => "periodic",
+            Self::SingleImpact => "single_impact",
+        }
+    }
+}
+
 /// What a simulation found.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Outcome {

@@ -10,7 +10,7 @@ use std::collections::BTreeMap;
 
 use contact_bounce::{model::F32_BACKEND, Method, Nodes, Prediction};
 use host_tests::grid::grid;
-use host_tests::reference::{simulate, Outcome, Regime, DEFAULT_BUDGET};
+use host_tests::reference::{simulate, Outcome, DEFAULT_BUDGET};
 use host_tests::stats::nearest_rank;
 use serde_json::json;
 
@@ -59,16 +59,6 @@ fn errors<F: contact_bounce::Float>(
     [("end", end), ("last_above", above)]
 }
 
-fn regime(r: Regime) -> &'static str {
-    match r {
-        Regime::ZenoAccumulation => "zeno_accumulation",
-        Regime::LastImpact => "last_impact",
-        Regime::Endless => "endless",
-        Regime::Periodic => "periodic",
-        Regime::SingleImpact => "single_impact",
-    }
-}
-
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     let scenes_out = args
@@ -82,7 +72,7 @@ fn main() {
         let Ok(truth) = simulate(&g.reference, DEFAULT_BUDGET) else {
             continue;
         };
-        let family = regime(truth.regime);
+        let family = truth.regime.name();
         exported.push(json!({
             "name": g.name, "family": g.family, "regime": family,
             "omega": g.reference.omega, "delta": g.reference.delta, "restitution": g.reference.restitution,
