@@ -9,7 +9,7 @@ use contact_bounce::{Method, Nodes, Prediction, Tolerance};
 use contact_bounce_reference::stats::nearest_rank_unsorted;
 
 use crate::eval::exact_outcome;
-use crate::scene_input::{FieldError, SceneInput};
+use crate::scene_input::{FieldError, Placement, SceneInput};
 use crate::spreads::{Range, Template};
 
 /// How to analyse.
@@ -183,6 +183,33 @@ pub struct Analysis {
     pub monte_carlo: Option<MonteCarlo>,
     /// Sensitivities, largest contribution first (with ranges).
     pub sensitivity: Vec<Sensitivity>,
+    /// What the user should know before using the window: a scene whose contacts do not stay
+    /// closed (a gap), where a window means little.
+    pub warning: Option<String>,
+}
+
+/// The warning of a scene whose spring does not press the contacts together at rest (a gap,
+/// or grazing): after its last impact the contacts are apart, or touch without force, so its
+/// bounce time is not the time to a closed contact, and a window from it means little (a
+/// datasheet's contact gap entered as `gap` gives a bounce of 0 and a window of 0 ticks).
+#[must_use]
+pub fn open_contact_warning(input: &SceneInput) -> Option<String> {
+    match input.placement {
+        Placement::Gap(d) if d > 0.0 => Some(format!(
+            "the contacts do not stay closed: with gap = {d:e} m (> 0) the spring holds them apart \
+             at rest, so the bounce ends with them open. A switch that closes and stays closed \
+             presses its contacts together: give preload_force instead (a datasheet's contact \
+             gap is how far the contacts open, not this gap; docs/parameters.md)"
+        )),
+        Placement::Gap(d) if d == 0.0 => Some(
+            "the contacts touch without force at rest (gap = 0, grazing), so nothing holds them \
+             closed after the bounce: a switch that stays closed presses its contacts together: \
+             give preload_force (docs/parameters.md)"
+                .to_owned(),
+        ),
+        // A negative gap is a preload: the spring presses the contacts together.
+        Placement::Gap(_) | Placement::PreloadForce(_) => None,
+    }
 }
 
 /// Draws the Monte Carlo samples in parallel; sample `i` is the same whatever the threads.
@@ -346,6 +373,7 @@ pub fn analyse(
         ticks,
         monte_carlo,
         sensitivity,
+        warning: open_contact_warning(template.nominal()),
     })
 }
 

@@ -408,11 +408,14 @@ pub fn render_to(
                 let id = identifier(&a.name);
                 let ns = window_ns(a.window).ok_or_else(|| too_long(a))?;
                 Ok(format!(
-                    "/* {}: bounce {} ({}), window {} */\n#define BOUNCE_{id}_WINDOW_TICKS {}u\n#define BOUNCE_{id}_WINDOW_NS {ns}ull\n\n",
+                    "/* {}: bounce {} ({}), window {}{} */\n#define BOUNCE_{id}_WINDOW_TICKS {}u\n#define BOUNCE_{id}_WINDOW_NS {ns}ull\n\n",
                     comment(&a.name),
                     time(a.nominal.bounce),
                     a.nominal.tier,
                     time(a.window),
+                    a.warning
+                        .as_ref()
+                        .map_or_else(String::new, |w| format!("; WARNING: {}", comment(w))),
                     a.ticks
                 ))
             })?;
@@ -433,11 +436,14 @@ pub fn render_to(
                 let id = identifier(&a.name);
                 let ns = window_ns(a.window).ok_or_else(|| too_long(a))?;
                 Ok(format!(
-                    "\n/// {}: bounce {} ({}), window {}.\npub const {id}_WINDOW_TICKS: u32 = {};\n/// The same window in nanoseconds, rounded up.\npub const {id}_WINDOW_NS: u64 = {ns};\n",
+                    "\n/// {}: bounce {} ({}), window {}.{}\npub const {id}_WINDOW_TICKS: u32 = {};\n/// The same window in nanoseconds, rounded up.\npub const {id}_WINDOW_NS: u64 = {ns};\n",
                     comment(&a.name),
                     time(a.nominal.bounce),
                     a.nominal.tier,
                     time(a.window),
+                    a.warning
+                        .as_ref()
+                        .map_or_else(String::new, |w| format!("\n/// WARNING: {}.", comment(w))),
                     a.ticks
                 ))
             })?;

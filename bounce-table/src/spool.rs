@@ -135,6 +135,13 @@ impl Spool {
             number(w, s.elasticity)?;
             number(w, s.contribution)?;
         }
+        match &a.warning {
+            None => w.write_all(&[0])?,
+            Some(t) => {
+                w.write_all(&[1])?;
+                text(w, t)?;
+            }
+        }
         self.len += 1;
         self.sensitivity |= !a.sensitivity.is_empty();
         Ok(())
@@ -276,6 +283,11 @@ fn read_analysis(r: &mut impl Read) -> io::Result<Analysis> {
             contribution: read_number(r)?,
         });
     }
+    let warning = if read_flag(r)? {
+        Some(read_text(r)?)
+    } else {
+        None
+    };
     Ok(Analysis {
         name,
         nominal: Estimate {
@@ -290,6 +302,7 @@ fn read_analysis(r: &mut impl Read) -> io::Result<Analysis> {
         ticks,
         monte_carlo,
         sensitivity,
+        warning,
     })
 }
 
@@ -326,6 +339,7 @@ mod tests {
             } else {
                 Vec::new()
             },
+            warning: with_spread.then(|| "the contacts do not stay closed".to_owned()),
         }
     }
 

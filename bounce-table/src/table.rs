@@ -101,6 +101,10 @@ impl Store<'_> {
                     if self.generated {
                         self.name_in_code(&a);
                     }
+                    if let Some(w) = &a.warning {
+                        // Not a fault: the window is written, with this beside it.
+                        (self.report)(format!("{}: {}: warning: {w}", self.source, a.name));
+                    }
                     if let Some(cells) = cells {
                         self.layout.fit(cells);
                     }

@@ -765,3 +765,40 @@ fn a_margin_multiplies_every_window_and_below_one_is_refused() {
     assert_eq!(bad.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&bad.stderr).contains("--margin"));
 }
+
+#[test]
+fn a_scene_whose_contacts_do_not_stay_closed_is_warned_of_never_silently_given_a_window() {
+    // A datasheet's contact gap entered as `gap`: one impact at t = 0, a window of 0 ticks.
+    let file = tmp("open.toml");
+    std::fs::write(
+        &file,
+        "[[switch]]\nname = \"datasheet gap\"\nmass = 5e-5\nstiffness = 5000\ngap = 3e-4\n\
+         restitution = 0.7\ndamping_ratio = 0.03\nclosing_speed = 0.5\n\n\
+         [[switch]]\nname = \"grazing\"\nomega = 1e4\ngap = 0\nrestitution = 0.7\n\
+         damping_ratio = 2\nclosing_speed = 0.5\n\n\
+         [[switch]]\nname = \"preloaded\"\nomega = 1e4\ngap = -1e-4\nrestitution = 0.7\n\
+         damping_ratio = 0.03\nclosing_speed = 0.5\n",
+    )
+    .expect("write");
+    let path = file.to_str().expect("path");
+    for format in ["table", "json", "c", "rust"] {
+        let out = run(&[path, "--format", format]);
+        assert!(out.status.success(), "{format}: a warning is not a fault");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            err.contains("datasheet gap: warning: the contacts do not stay closed")
+                && err.contains("give preload_force"),
+            "{format}: {err}"
+        );
+        assert!(
+            err.contains("grazing: warning: the contacts touch without force"),
+            "{err}"
+        );
+        assert!(!err.contains("preloaded: warning"), "{err}");
+        let text = String::from_utf8_lossy(&out.stdout);
+        if format == "c" || format == "rust" {
+            // The generated file carries it beside the window.
+            assert_eq!(text.matches("WARNING: the contacts").count(), 2, "{text}");
+        }
+    }
+}
