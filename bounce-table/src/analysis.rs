@@ -201,7 +201,7 @@ pub fn open_contact_warning(input: &SceneInput) -> Option<String> {
              presses its contacts together: give preload_force instead (a datasheet's contact \
              gap is how far the contacts open, not this gap; docs/parameters.md)"
         )),
-        Placement::Gap(d) if d == 0.0 => Some(
+        Placement::Gap(0.0) => Some(
             "the contacts touch without force at rest (gap = 0, grazing), so nothing holds them \
              closed after the bounce: a switch that stays closed presses its contacts together: \
              give preload_force (docs/parameters.md)"
