@@ -124,7 +124,7 @@ fn flights_that_do_not_shrink_are_not_called_an_impact_model() {
 
 #[test]
 fn exported_windows_compile_as_c_and_rust() {
-    let events: Vec<Event> = (0..6).map(|i| press(0.7, 0.01, f64::from(i))).collect();
+    let events: Vec<Event> = (0..10).map(|i| press(0.7, 0.01, f64::from(i))).collect();
     let groups = group(&events, 1e-12, GAP);
     let dir = std::env::temp_dir().join(format!("calibrate-export-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
@@ -156,7 +156,7 @@ fn exported_windows_compile_as_c_and_rust() {
     // bounce of these identical presses.
     // A capture in the wrong unit (times a billion times too long): refused, not a
     // saturated number.
-    let long: Vec<Event> = (0..6)
+    let long: Vec<Event> = (0..10)
         .map(|i| {
             let start = f64::from(i) * 1e13;
             Event {
@@ -186,7 +186,7 @@ fn exported_windows_compile_as_c_and_rust() {
 
 #[test]
 fn the_plot_draws_the_observed_and_the_modelled_distribution() {
-    let events: Vec<Event> = (0..6).map(|i| press(0.7, 0.01, f64::from(i))).collect();
+    let events: Vec<Event> = (0..10).map(|i| press(0.7, 0.01, f64::from(i))).collect();
     let groups = group(&events, 1e-12, GAP);
     let ((switch, kind), d) = groups.iter().next().unwrap();
     let svg = bounce_table::calibrate::plot(switch, *kind, d, 0.99);
@@ -198,7 +198,7 @@ fn the_plot_draws_the_observed_and_the_modelled_distribution() {
     // Data dots are translucent; the legend's is not.
     assert_eq!(
         svg.matches("fill-opacity").count(),
-        6,
+        10,
         "one dot per bouncing event"
     );
     let window = bounce_table::calibrate::window(&d.iter().collect::<Vec<_>>(), 0.99);

@@ -170,10 +170,10 @@ fn calibrate_speaks_format_and_output_like_every_subcommand() {
             .output()
             .expect("run")
     };
-    // Eight presses and releases of a switch that bounces 40-75 us (the CSV fixture has two
-    // releases 250 times apart: their window is a fit's tail, beyond what code can hold).
+    // Ten presses and releases of a switch that bounces 40-85 us (the CSV fixture has two of
+    // each: too few for a window).
     let mut lines = String::new();
-    for test in 0..8_u64 {
+    for test in 0..10_u64 {
         let bounce = 40_000 + 5_000 * test;
         for (kind, open) in [("press", 1), ("release", 0)] {
             lines.push_str(&format!(
@@ -208,15 +208,23 @@ fn calibrate_speaks_format_and_output_like_every_subcommand() {
         text.starts_with("/* Debounce windows from a capture") && text.contains("#endif"),
         "{text}"
     );
-    // Two releases 250 times apart: the fit's tail puts the window at 1e26 s, which used to be
-    // exported as u64::MAX nanoseconds without a word. Refused, naming the switch.
+    // Two presses and two releases, one pair 250 times apart: the fit's tail put the window at
+    // 1e26 s, once exported as u64::MAX nanoseconds without a word. Too few events for any
+    // window: refused, naming the switch and kind.
     let fixture_csv = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/fixtures/button.csv");
     let out = run(&["--format", "c", fixture_csv]);
     assert_eq!(out.status.code(), Some(2));
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(
-        stderr.contains("button release") && stderr.contains("64-bit count"),
+        stderr.contains("button press: 2 events are too few for a window (at least 10)"),
         "{stderr}"
+    );
+    let report = run(&[fixture_csv]);
+    let summary = String::from_utf8_lossy(&report.stdout);
+    assert!(
+        summary.contains("- button release: no window: 2 events are too few")
+            && !summary.contains("e26"),
+        "{summary}"
     );
     // The older spelling gives the same windows.
     let old = run(&["--export", "c", &csv]);

@@ -1,13 +1,14 @@
 //! The windows as C `#define`s or Rust constants.
 
-use super::window::window;
+use super::window::{window, MIN_EVENTS};
 use super::Groups;
 use crate::capture;
 
 /// The windows as C `#define`s or Rust constants (nanoseconds, rounded up).
 ///
 /// # Errors
-/// A window beyond a 64-bit count of nanoseconds (about 585 years: a capture whose times are
+/// A switch and kind with fewer than [`MIN_EVENTS`] events, or a window beyond a 64-bit count
+/// of nanoseconds (about 585 years: a capture whose times are
 /// not seconds), naming its switch and kind.
 pub fn export(groups: &Groups<'_>, percentile: f64, rust: bool) -> Result<String, String> {
     let mut out = String::new();
@@ -25,7 +26,15 @@ pub fn export(groups: &Groups<'_>, percentile: f64, rust: bool) -> Result<String
     }
     for ((switch, kind), d) in groups {
         let refs: Vec<&capture::Description> = d.iter().collect();
-        let w = window(&refs, percentile).recommended();
+        let fitted = window(&refs, percentile);
+        if fitted.too_few() {
+            return Err(format!(
+                "{switch} {}: {} events are too few for a window (at least {MIN_EVENTS}): capture more",
+                kind.name(),
+                fitted.events
+            ));
+        }
+        let w = fitted.recommended();
         let ns = crate::output::window_ns(w).ok_or_else(|| {
             format!(
                 "{switch} {}: the window, {w:e} s, is beyond a 64-bit count of nanoseconds",

@@ -24,7 +24,9 @@ pub use options::{load, options, Format, Options};
 pub use plot::plot;
 pub use predictive::{inverse, Part, Predictive};
 pub use report::{assess, describe, summary};
-pub use window::{chronological_cover, earlier_count, window, Cover, Window, FAR_BEYOND};
+pub use window::{
+    chronological_cover, earlier_count, window, Cover, Window, FAR_BEYOND, MIN_EVENTS,
+};
 
 fn sorted(mut v: Vec<f64>) -> Vec<f64> {
     v.sort_by(f64::total_cmp);

@@ -55,15 +55,20 @@ pub fn plot(switch: &str, kind: Kind, d: &[capture::Description], percentile: f6
         series.push(Series::new("fitted model", "#2ca02c", Style::Line, points));
     }
     let w = super::window(&refs, percentile);
-    let markers = vec![Marker {
-        x: w.recommended(),
-        label: format!(
-            "window {} (P{} of the fitted model)",
-            time(w.recommended()),
-            100.0 * percentile
-        ),
-        colour: "#ff7f0e",
-    }];
+    // No window is recommended from too few events: none is drawn.
+    let markers = if w.too_few() {
+        Vec::new()
+    } else {
+        vec![Marker {
+            x: w.recommended(),
+            label: format!(
+                "window {} (P{} of the fitted model)",
+                time(w.recommended()),
+                100.0 * percentile
+            ),
+            colour: "#ff7f0e",
+        }]
+    };
     Plot {
         title: format!(
             "{switch} {}: bounce CDF ({clean}/{} clean left out)",

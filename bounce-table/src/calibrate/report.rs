@@ -5,7 +5,7 @@ use super::fit::{BounceModel, ImpactFit, LogNormal};
 use super::heldout::{
     random_splits, ratio, validations, RatioSpread, RANDOM_SPLITS, VALIDATION_QUANTILES,
 };
-use super::window::{chronological_cover, window, Cover, FAR_BEYOND};
+use super::window::{chronological_cover, window, Cover, FAR_BEYOND, MIN_EVENTS};
 use super::{sorted, Groups};
 use crate::capture;
 use crate::output::time;
@@ -231,9 +231,19 @@ pub fn assess(groups: &Groups<'_>, percentile: f64, seed: u64) -> String {
             "| {switch} | {} | {} | {} | {} | {} | {explained} |\n",
             kind.name(),
             time(w.observed),
-            w.predictive.map_or_else(|| "-".to_owned(), time),
-            time(w.recommended()),
-            w.reason().unwrap_or_default(),
+            w.predictive
+                .filter(|_| !w.too_few())
+                .map_or_else(|| "-".to_owned(), time),
+            if w.too_few() {
+                "none".to_owned()
+            } else {
+                time(w.recommended())
+            },
+            if w.too_few() {
+                format!("{} events are too few (at least {MIN_EVENTS})", w.events)
+            } else {
+                w.reason().unwrap_or_default()
+            },
         ));
     }
     out + &model + &checks + &spread + &windows
@@ -259,6 +269,15 @@ pub fn summary(groups: &Groups<'_>, percentile: f64, burst_gap: f64) -> String {
             .filter(|x| x.bursts > 1)
             .map(|x| x.bounce)
             .collect();
+        if w.too_few() {
+            out.push_str(&format!(
+                "- {switch} {}: no window: {} events are too few (at least {MIN_EVENTS}; below that the fit's own uncertainty sets its tail); the largest bounce observed is {}. Capture more.\n",
+                kind.name(),
+                d.len(),
+                time(w.observed)
+            ));
+            continue;
+        }
         let what = if w.predictive.is_some_and(|p| p >= w.observed) {
             format!("P{} of the fitted model's predictive", percentile * 100.0)
         } else {
