@@ -7,6 +7,7 @@ pub mod analysis;
 pub mod calibrate;
 pub mod capture;
 pub mod cli;
+pub mod emit;
 pub mod eval;
 pub mod output;
 pub mod plot;

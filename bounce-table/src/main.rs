@@ -338,7 +338,12 @@ fn main() -> ExitCode {
                     );
                     return ExitCode::from(2);
                 }
-                match calibrate::export(&groups, options.percentile, rust) {
+                let lang = if rust {
+                    bounce_table::emit::Lang::Rust
+                } else {
+                    bounce_table::emit::Lang::C
+                };
+                match calibrate::export(&groups, options.percentile, lang, &options.file) {
                     Ok(text) => text,
                     Err(e) => {
                         eprintln!(

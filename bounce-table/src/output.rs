@@ -6,6 +6,7 @@ use std::io::Write;
 use serde_json::json;
 
 use crate::analysis::{Analysis, Settings};
+use crate::emit::Lang;
 
 /// An output format.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -396,57 +397,48 @@ pub fn render_to(
             })?;
             writeln!(out, "{}", if any { "\n]" } else { "[]" })?;
         }
-        Format::C => {
+        Format::C | Format::Rust => {
+            let (lang, prefix) = if format == Format::C {
+                (Lang::C, "BOUNCE_")
+            } else {
+                (Lang::Rust, "")
+            };
+            let guard = "BOUNCE_TABLE_H";
+            let mut head = String::new();
             for line in provenance(settings, source) {
-                writeln!(out, "/* {line} */")?;
+                head.push_str(&lang.comment(&line));
             }
             if typical {
-                writeln!(out, "/* Typical parameters over assumed ranges: assumed values, not a datasheet. */")?;
+                head.push_str(&lang.comment(
+                    "Typical parameters over assumed ranges: assumed values, not a datasheet.",
+                ));
             }
-            writeln!(out, "#ifndef BOUNCE_TABLE_H\n#define BOUNCE_TABLE_H\n")?;
+            head.push_str(&lang.open(guard));
+            write!(out, "{head}")?;
             write_rows(out, analyses, threads, &|a, _| {
-                let id = identifier(&a.name);
+                let id = format!("{prefix}{}", identifier(&a.name));
                 let ns = window_ns(a.window).ok_or_else(|| too_long(a))?;
-                Ok(format!(
-                    "/* {}: bounce {} ({}), window {}{} */\n#define BOUNCE_{id}_WINDOW_TICKS {}u\n#define BOUNCE_{id}_WINDOW_NS {ns}ull\n\n",
-                    comment(&a.name),
-                    time(a.nominal.bounce),
-                    a.nominal.tier,
-                    time(a.window),
-                    a.warning
-                        .as_ref()
-                        .map_or_else(String::new, |w| format!("; WARNING: {}", comment(w))),
-                    a.ticks
-                ))
+                let mut row = format!(
+                    "\n{}",
+                    lang.doc(&format!(
+                        "{}: bounce {} ({}), window {}.",
+                        comment(&a.name),
+                        time(a.nominal.bounce),
+                        a.nominal.tier,
+                        time(a.window)
+                    ))
+                );
+                if let Some(w) = &a.warning {
+                    row.push_str(&lang.doc(&format!("WARNING: {}.", comment(w))));
+                }
+                row.push_str(&lang.u32(&format!("{id}_WINDOW_TICKS"), a.ticks));
+                row.push_str(&lang.doc("The same window in nanoseconds, rounded up."));
+                row.push_str(&lang.u64(&format!("{id}_WINDOW_NS"), ns));
+                Ok(row)
             })?;
-            writeln!(out, "#endif /* BOUNCE_TABLE_H */")?;
-        }
-        Format::Rust => {
-            // Plain comments, not inner doc comments: the file can be `include!`d.
-            for line in provenance(settings, source) {
-                writeln!(out, "// {line}")?;
+            if lang == Lang::C {
+                write!(out, "\n{}", lang.close(guard))?;
             }
-            if typical {
-                writeln!(
-                    out,
-                    "// Typical parameters over assumed ranges: assumed values, not a datasheet."
-                )?;
-            }
-            write_rows(out, analyses, threads, &|a, _| {
-                let id = identifier(&a.name);
-                let ns = window_ns(a.window).ok_or_else(|| too_long(a))?;
-                Ok(format!(
-                    "\n/// {}: bounce {} ({}), window {}.{}\npub const {id}_WINDOW_TICKS: u32 = {};\n/// The same window in nanoseconds, rounded up.\npub const {id}_WINDOW_NS: u64 = {ns};\n",
-                    comment(&a.name),
-                    time(a.nominal.bounce),
-                    a.nominal.tier,
-                    time(a.window),
-                    a.warning
-                        .as_ref()
-                        .map_or_else(String::new, |w| format!("\n/// WARNING: {}.", comment(w))),
-                    a.ticks
-                ))
-            })?;
         }
     }
     Ok(())

@@ -10,6 +10,7 @@ use bounce_table::calibrate::{
     LogNormal,
 };
 use bounce_table::capture::{Event, Kind};
+use bounce_table::emit::Lang;
 use bounce_table::spreads::SplitMix;
 use contact_bounce_reference::{simulate_observed, OneBody, DEFAULT_BUDGET};
 
@@ -131,7 +132,7 @@ fn exported_windows_compile_as_c_and_rust() {
     let header = dir.join("windows.h");
     std::fs::write(
         &header,
-        bounce_table::calibrate::export(&groups, 0.99, false).unwrap(),
+        bounce_table::calibrate::export(&groups, 0.99, Lang::C, "synthetic.jsonl").unwrap(),
     )
     .unwrap();
     let c = dir.join("use.c");
@@ -145,7 +146,8 @@ fn exported_windows_compile_as_c_and_rust() {
     .unwrap();
     common::compile_c(&c, &dir);
     let rs = dir.join("windows.rs");
-    let constants = bounce_table::calibrate::export(&groups, 0.99, true).unwrap();
+    let constants =
+        bounce_table::calibrate::export(&groups, 0.99, Lang::Rust, "synthetic.jsonl").unwrap();
     std::fs::write(
         &rs,
         format!("{constants}\npub fn w() -> u64 {{ SYNTHETIC_PRESS_WINDOW_NS }}\n"),
@@ -168,7 +170,8 @@ fn exported_windows_compile_as_c_and_rust() {
         })
         .collect();
     let long_groups = group(&long, 1e-12, GAP);
-    let refused = bounce_table::calibrate::export(&long_groups, 0.99, false).unwrap_err();
+    let refused =
+        bounce_table::calibrate::export(&long_groups, 0.99, Lang::C, "long.csv").unwrap_err();
     assert!(
         refused.contains("beyond a 64-bit count of nanoseconds"),
         "{refused}"

@@ -75,16 +75,23 @@ pub enum Regime {
 }
 
 impl Regime {
-    /// Its name in reports and files, as the core's `Regime::name` writes it.
+    /// The core's regime of the same name.
+    #[must_use]
+    pub const fn core(self) -> contact_bounce::scene::Regime {
+        use contact_bounce::scene::Regime as Core;
+        match self {
+            Self::ZenoAccumulation => Core::ZenoAccumulation,
+            Self::LastImpact => Core::LastImpact,
+            Self::Endless => Core::Endless,
+            Self::Periodic => Core::Periodic,
+            Self::SingleImpact => Core::SingleImpact,
+        }
+    }
+
+    /// Its name in reports and files: the core's ([`contact_bounce::scene::Regime::name`]).
     #[must_use]
     pub const fn name(self) -> &'static str {
-        match self {
-            Self::ZenoAccumulation => "zeno_accumulation",
-            Self::LastImpact => "last_impact",
-            Self::Endless => "endless",
-            Self::Periodic => "periodic",
-            Self::SingleImpact => "single_impact",
-        }
+        self.core().name()
     }
 }
 
