@@ -221,7 +221,9 @@ fn monte_carlo(template: &Template, settings: &Settings) -> Result<MonteCarlo, F
     // Each worker: its samples' bounces and upper bounds, and how many the exact reference
     // gave. One scene per worker, every ranged parameter drawn over it for each sample.
     let work = |k: usize| -> Result<(Vec<f64>, Vec<f64>, u64), FieldError> {
-        let share = usize::try_from(n / threads + 1).unwrap_or(0);
+        // Reserved up front, but never more than a million (a library caller may ask for
+        // any count; the CLI caps it).
+        let share = usize::try_from(n / threads + 1).unwrap_or(0).min(1 << 20);
         let (mut bounces, mut uppers, mut exact) =
             (Vec::with_capacity(share), Vec::with_capacity(share), 0);
         let mut scene = template.nominal().clone();
@@ -248,7 +250,7 @@ fn monte_carlo(template: &Template, settings: &Settings) -> Result<MonteCarlo, F
             .map(|(k, job)| job.join(&work).unwrap_or_else(|| work(k)))
             .collect()
     });
-    let all = usize::try_from(n).unwrap_or(0);
+    let all = usize::try_from(n).unwrap_or(0).min(1 << 20);
     let (mut bounces, mut uppers, mut exact) =
         (Vec::with_capacity(all), Vec::with_capacity(all), 0);
     for r in results {

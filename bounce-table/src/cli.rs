@@ -7,6 +7,9 @@ use crate::output::Format;
 /// The most worker threads `--threads` takes: each is a stack, and a run asks for no more
 /// than its work can use.
 pub const MAX_THREADS: u64 = 1024;
+/// At most this many Monte Carlo samples: each keeps 16 bytes of results, so a run takes at
+/// most 1.6 GB (and minutes), not an allocation the system refuses.
+pub const MAX_SAMPLES: u64 = 100_000_000;
 
 /// The table mode's options (`bounce-table [OPTIONS] [SCENE_FILE]`).
 #[derive(Debug, Clone)]
@@ -83,6 +86,9 @@ fn parse_unescaped(args: &[String]) -> Result<Options, String> {
                     .filter(|n| *n > 0 || arg == "--seed")
                     .ok_or(format!("{arg}: '{v}' is not a whole number above 0"))?;
                 match arg.as_str() {
+                    "--samples" if n > MAX_SAMPLES => {
+                        return Err(format!("--samples: {n} is above {MAX_SAMPLES}"))
+                    }
                     "--samples" => o.settings.samples = n,
                     "--seed" => o.settings.seed = n,
                     _ if n > MAX_THREADS => {

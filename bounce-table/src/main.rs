@@ -80,7 +80,7 @@ Options (every subcommand also takes -h/--help, -V/--version, and --option=value
   --tolerance X        relative error asked of the model, else the exact reference (0.1)
   --percentile P       percentile of the Monte Carlo window with ranges (99.9)
   --margin F           safety factor on every window, at least 1 (1: none; 1.5 for +50 %)
-  --samples N          Monte Carlo samples (4000)
+  --samples N          Monte Carlo samples (4000; at most 1e8)
   --seed S             Monte Carlo seed (1)
   --threads N          worker threads (all cores; at most 1024)
   --plot DIR           also write NAME-envelope.svg and NAME-motion.svg for each switch

@@ -466,6 +466,12 @@ fn more_threads_than_a_run_can_use_are_refused() {
     assert!(run(&["--threads", "1024", "--samples", "100"])
         .status
         .success());
+    // The most samples a run keeps (16 bytes each): beyond, a clear refusal, not a
+    // reservation the allocator refuses with a panic.
+    let out = run(&["--samples", "18446744073709551615"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr)
+        .contains("--samples: 18446744073709551615 is above 100000000"));
 }
 
 #[test]
