@@ -42,7 +42,7 @@ macro_rules! outln {
     ($($arg:tt)*) => { emit(&format!("{}\n", format!($($arg)*))) };
 }
 
-const USAGE: &str = "usage: bounce-table [OPTIONS] [SCENE_FILE]
+const SYNOPSIS: &str = "usage: bounce-table [OPTIONS] [SCENE_FILE]
        bounce-table eval [--method exact|exact-tier|map|averaged|closed|auto] [--tolerance X]
                          [--precision f32|f64] [--nodes N] [scenes.jsonl, else stdin]
        bounce-table replay [--period S] [--split F] [--time-scale X] [--switch-type TYPE]
@@ -53,9 +53,10 @@ const USAGE: &str = "usage: bounce-table [OPTIONS] [SCENE_FILE]
                               [--quiet S] [--signal NAME] [--active-high]
                               [--skip-section NAME]
                               [--percentile P] [--seed N] [--plot DIR]
-                              [--contact-models] CAPTURE
+                              [--contact-models] CAPTURE";
 
-Prints predicted bounce and debounce windows: for the built-in catalogue of typical switches
+/// The table mode's help (scene files, keys, options).
+const TABLE_HELP: &str = "Prints predicted bounce and debounce windows: for the built-in catalogue of typical switches
 (assumed values over assumed ranges, not a datasheet; windows the P99.9 over the ranges), or for the switches of SCENE_FILE
 (.toml with [[switch]] tables, .json, or .jsonl; the keys of `eval`, and any number may be a
 range: {min = a, max = b} or {value = x, spread = s}).
@@ -83,9 +84,22 @@ Options (every subcommand also takes -h/--help, -V/--version, and --option=value
   --samples N          Monte Carlo samples (4000; at most 1e8)
   --seed S             Monte Carlo seed (1)
   --threads N          worker threads (all cores; at most 1024)
-  --plot DIR           also write NAME-envelope.svg and NAME-motion.svg for each switch
+  --plot DIR           also write NAME-envelope.svg and NAME-motion.svg for each switch";
 
-replay: the benchmark of debouncers on a real capture. Per switch and kind, the earlier tests
+/// `eval`'s help.
+const EVAL_HELP: &str = "eval: JSON Lines scenes (the scene keys of `bounce-table --help`; a file, else standard
+input), one JSON result a line on standard output: the regime, the end of the bounce, the last impact above the threshold,
+impact counts and the tier's expected error. A bad line gets an error object naming the line
+and the field; the other lines still run, and the exit status is 1 if any line failed.
+  --method M           exact (the host's exact reference), exact-tier (the core's exact tier),
+                       map, averaged, closed or auto (auto)
+  --tolerance X        the relative error auto must promise (0.01)
+  --precision P        f32 or f64, for the core's tiers (f64)
+  --nodes N            Gauss-Legendre nodes per panel of the averaged tier (8)";
+
+/// `replay`'s help.
+const REPLAY_HELP: &str =
+    "replay: the benchmark of debouncers on a real capture. Per switch and kind, the earlier tests
 (--split, 0.5) calibrate and the later ones are replayed through our debouncer with the
 calibrated windows (hold-off and confirm), with the switch type's prior window (physics-prior:
 the type from the switch's name or --switch-type), with the learning debouncer (learned: from
@@ -98,9 +112,11 @@ beyond each test's one) and latency P50/P99 from the first contact change.
   --split F            the earlier share of the tests that calibrates (0.5)
   --time-scale X       every time multiplied by X (10: contactor-like, 0.1: reed-like)
   --switch-type TYPE   push-button, rocker, toggle, slide, tactile or hand-operated
-  --plot DIR           also write SWITCH-KIND-replay.svg: false edges against latency
+  --plot DIR           also write SWITCH-KIND-replay.svg: false edges against latency";
 
-calibrate: describes a capture (JSON Lines of the bouncy-button format, a CSV of `time,level`
+/// `calibrate`'s help.
+const CALIBRATE_HELP: &str =
+    "calibrate: describes a capture (JSON Lines of the bouncy-button format, a CSV of `time,level`
 rows, or a VCD; format from the extension) per switch and kind (bounce P50/P90/P99/max,
 transitions, resolved flights and dwells, chatter), fits the impact model and a bounce model
 with empirical terms (clean share, log-normal bursts, late bursts), checks them and the
@@ -120,6 +136,31 @@ empirical quantiles on held-out halves, and recommends windows. High = open unle
   --contact-models     also fit the two-body and compliant-contact models to each switch's
                        presses and check them on held-out halves (about a minute)
   --plot DIR           also write SWITCH-KIND.svg: observed bounce distribution vs the models";
+
+/// The help `--help` prints: everything for the table mode, one subcommand's for a subcommand.
+fn help(subcommand: Option<&str>) -> String {
+    let synopsis: Vec<&str> = SYNOPSIS.lines().collect();
+    let pick = |from: usize, to: usize, text: &str| {
+        let mut lines: Vec<String> = synopsis
+            .get(from..to)
+            .unwrap_or_default()
+            .iter()
+            .map(|l| l.trim_start().to_owned())
+            .collect();
+        for l in lines.iter_mut().skip(1) {
+            *l = format!("       {l}");
+        }
+        format!("usage: {}\n\n{text}", lines.join("\n"))
+    };
+    match subcommand {
+        Some("eval") => pick(1, 3, EVAL_HELP),
+        Some("replay") => pick(3, 6, REPLAY_HELP),
+        Some("calibrate") => pick(6, synopsis.len(), CALIBRATE_HELP),
+        _ => format!(
+            "{SYNOPSIS}\n\n{TABLE_HELP}\n\n{EVAL_HELP}\n\n{REPLAY_HELP}\n\n{CALIBRATE_HELP}"
+        ),
+    }
+}
 
 /// The scene file's entries (else the catalogue's); `None` when the file cannot be opened or
 /// parsed as a whole (each fault reported).
@@ -170,7 +211,9 @@ fn replay_main(args: &[String]) -> ExitCode {
     let request = match replay::options(args) {
         Ok(r) => r,
         Err(message) => {
-            eprintln!("bounce-table replay: {message}\n{SEE_HELP}");
+            eprintln!(
+                "bounce-table replay: {message}\n(bounce-table replay --help shows its usage)"
+            );
             return ExitCode::from(2);
         }
     };
@@ -262,14 +305,16 @@ fn main() -> ExitCode {
         return ExitCode::SUCCESS;
     }
     if args.iter().any(|a| a == "--help" || a == "-h") {
-        outln!("{USAGE}");
+        outln!("{}", help(args.first().map(String::as_str)));
         return ExitCode::SUCCESS;
     }
     if args.first().is_some_and(|a| a == "eval") {
         let options = match eval::options(args.get(1..).unwrap_or_default()) {
             Ok(o) => o,
             Err(message) => {
-                eprintln!("bounce-table eval: {message}\n{SEE_HELP}");
+                eprintln!(
+                    "bounce-table eval: {message}\n(bounce-table eval --help shows its usage)"
+                );
                 return ExitCode::from(2);
             }
         };
@@ -296,7 +341,7 @@ fn main() -> ExitCode {
         let options = match calibrate::options(args.get(1..).unwrap_or_default()) {
             Ok(o) => o,
             Err(message) => {
-                eprintln!("bounce-table calibrate: {message}\n{SEE_HELP}");
+                eprintln!("bounce-table calibrate: {message}\n(bounce-table calibrate --help shows its usage)");
                 return ExitCode::from(2);
             }
         };

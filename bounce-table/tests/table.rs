@@ -698,7 +698,26 @@ fn every_subcommand_takes_help_version_and_option_equals_value() {
     for sub in [&[][..], &["eval"][..], &["calibrate"][..], &["replay"][..]] {
         let help = run(&[sub, &["--help"]].concat());
         assert_eq!(help.status.code(), Some(0), "{sub:?} --help");
-        assert!(String::from_utf8_lossy(&help.stdout).starts_with("usage: bounce-table"));
+        let text = String::from_utf8_lossy(&help.stdout);
+        assert!(text.starts_with("usage: bounce-table"));
+        // A subcommand's help is its own: its usage and options, not every subcommand's.
+        if let Some(name) = sub.first() {
+            assert!(
+                text.starts_with(&format!("usage: bounce-table {name} ")),
+                "{text}"
+            );
+            for other in ["eval", "replay", "calibrate"]
+                .iter()
+                .filter(|o| *o != name)
+            {
+                assert!(!text.contains(&format!("\n{other}: ")), "{name}: {text}");
+            }
+        } else {
+            assert!(
+                text.contains("\neval: ") && text.contains("\ncalibrate: "),
+                "{text}"
+            );
+        }
         let version = run(&[sub, &["-V"]].concat());
         assert_eq!(version.status.code(), Some(0), "{sub:?} -V");
         assert_eq!(
