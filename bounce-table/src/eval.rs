@@ -47,6 +47,26 @@ impl Method {
     }
 }
 
+/// The float of `--precision`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Precision {
+    /// `f32`, as most firmware would run.
+    F32,
+    /// `f64`.
+    F64,
+}
+
+impl Precision {
+    /// As `--precision` and the results write it.
+    #[must_use]
+    pub const fn name(self) -> &'static str {
+        match self {
+            Self::F32 => "f32",
+            Self::F64 => "f64",
+        }
+    }
+}
+
 /// Parsed options.
 #[derive(Debug, Clone)]
 pub struct Options {
@@ -54,8 +74,8 @@ pub struct Options {
     pub method: Method,
     /// Relative tolerance for auto.
     pub tolerance: f64,
-    /// True for f32.
-    pub single: bool,
+    /// The float the core's tiers run in.
+    pub precision: Precision,
     /// Averaged tier nodes.
     pub nodes: Nodes,
     /// The JSON Lines file to read; standard input when `None`.
@@ -75,7 +95,7 @@ fn options_unescaped(args: &[String]) -> Result<Options, String> {
     let mut out = Options {
         method: Method::Auto,
         tolerance: 0.01,
-        single: false,
+        precision: Precision::F64,
         nodes: Nodes::N8,
         file: None,
     };
@@ -107,9 +127,9 @@ fn options_unescaped(args: &[String]) -> Result<Options, String> {
                     .ok_or(format!("--tolerance: '{v}' is not a positive number"))?;
             }
             "--precision" => {
-                out.single = match value("--precision")?.as_str() {
-                    "f32" => true,
-                    "f64" => false,
+                out.precision = match value("--precision")?.as_str() {
+                    "f32" => Precision::F32,
+                    "f64" => Precision::F64,
                     other => return Err(format!("--precision: '{other}' is not f32 or f64")),
                 }
             }
@@ -228,7 +248,7 @@ fn core_result<F: Float>(input: &SceneInput, options: &Options) -> Result<Value,
         "tier": format!("{:?}", p.tier),
         // Expected errors are estimates (some stored as f32): four significant digits.
         "expected_error": expected.map(|e| significant(e, 4)),
-        "precision": if options.single { "f32" } else { "f64" },
+        "precision": options.precision.name(),
     });
     if options.method == Method::Auto {
         if let (Some(map), Ok(t)) = (
@@ -247,7 +267,7 @@ fn core_result<F: Float>(input: &SceneInput, options: &Options) -> Result<Value,
 /// # Errors
 /// The field at fault, or the reference's failure (with an empty field).
 pub fn exact_outcome(input: &SceneInput) -> Result<reference::Outcome, FieldError> {
-    if input.kernel.is_some() && matches!(input.stiffness, Spring::TwoBody(..)) {
+    if input.kernel.is_some() && matches!(input.spring, Spring::TwoBody(..)) {
         return Err(FieldError {
             field: "kernel".to_owned(),
             message: "the exact reference simulates a kernel on one body only".to_owned(),
@@ -272,7 +292,7 @@ pub fn exact_outcome(input: &SceneInput) -> Result<reference::Outcome, FieldErro
             threshold: scene.threshold_impulse(),
         };
         reference::hereditary::simulate(&k, reference::DEFAULT_BUDGET).map_err(failed)?
-    } else if let Spring::TwoBody(b, x2, v2) = input.stiffness {
+    } else if let Spring::TwoBody(b, x2, v2) = input.spring {
         let pair = reference::two_body::TwoBodies {
             m: [b.m1, b.m2],
             c: [b.c1, b.c2],
@@ -342,10 +362,10 @@ pub fn evaluate(
             .to_owned();
         (name, e)
     })?;
-    let result = match (options.method, options.single) {
+    let result = match (options.method, options.precision) {
         (Method::Exact, _) => exact_result(&input),
-        (_, true) => core_result::<f32>(&input, options),
-        (_, false) => core_result::<f64>(&input, options),
+        (_, Precision::F32) => core_result::<f32>(&input, options),
+        (_, Precision::F64) => core_result::<f64>(&input, options),
     };
     result.map_err(|e| (input.name.clone(), e))
 }

@@ -538,7 +538,7 @@ pub fn plots(
         .collect();
     // Exact impacts: every one for one body, the first five otherwise.
     let mut impacts = Vec::new();
-    if input.kernel.is_none() && !matches!(input.stiffness, Spring::TwoBody(..)) {
+    if input.kernel.is_none() && !matches!(input.spring, Spring::TwoBody(..)) {
         let one = contact_bounce_reference::OneBody {
             omega: scene.omega(),
             delta: scene.delta(),
@@ -581,7 +581,7 @@ pub fn plots(
         markers: markers.clone(),
     }
     .svg();
-    let bodies = match input.stiffness {
+    let bodies = match input.spring {
         Spring::TwoBody(b, x2, v2) => Bodies::from_initial(
             b.m1 / (b.m1 + b.m2),
             scene.delta(),

@@ -66,8 +66,9 @@ pub struct Kernel {
 pub struct SceneInput {
     /// `name`, or "line N".
     pub name: String,
-    /// Natural frequency.
-    pub stiffness: Spring,
+    /// Where the natural frequency comes from (`omega`, `mass` and `stiffness`, or
+    /// `two_body`).
+    pub spring: Spring,
     /// Gap or preload.
     pub placement: Placement,
     /// R.
@@ -153,7 +154,7 @@ impl SceneInput {
             Some(_) => return Err(FieldError::new("name", "must be a string")),
         };
         let has = |k: &str| object.get(k).is_some_and(|v| !v.is_null());
-        let stiffness = if let Some(two) = object.get("two_body").filter(|v| !v.is_null()) {
+        let spring = if let Some(two) = object.get("two_body").filter(|v| !v.is_null()) {
             for k in ["omega", "mass", "stiffness", "damping_ratio"] {
                 if has(k) {
                     return Err(conflict("two_body", k));
@@ -232,7 +233,7 @@ impl SceneInput {
         };
         Ok(Self {
             name,
-            stiffness,
+            spring,
             placement,
             restitution: required(object, "restitution", "")?,
             damping_ratio: number(object, "damping_ratio", "")?.unwrap_or(0.0),
@@ -272,7 +273,7 @@ impl SceneInput {
     /// The value given for a parameter, if this scene has it.
     fn value_of(&self, parameter: contact_bounce::Parameter) -> Option<f64> {
         use contact_bounce::Parameter as P;
-        Some(match (parameter, self.stiffness, self.placement) {
+        Some(match (parameter, self.spring, self.placement) {
             (P::Omega, Spring::Omega(w), _) => w,
             (P::Mass, Spring::MassStiffness(m, _), _) => m,
             (P::Stiffness, Spring::MassStiffness(_, k), _) => k,
@@ -356,7 +357,7 @@ impl SceneInput {
             };
             Scene::new(contact, (viscous, kernel)).map_err(|e| self.fault(e))
         };
-        let scene = match self.stiffness {
+        let scene = match self.spring {
             Spring::TwoBody(b, _, _) => {
                 let bodies = TwoBody {
                     m1: c("two_body.m1", b.m1)?,

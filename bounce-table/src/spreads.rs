@@ -133,7 +133,7 @@ impl Param {
     /// Sets this parameter of `scene` to `x`; false where the scene has no such number (a
     /// mass on a scene given by omega, a kernel's tau on a scene without a kernel).
     fn set(self, scene: &mut SceneInput, x: f64) -> bool {
-        let slot = match (self, &mut scene.stiffness, &mut scene.placement) {
+        let slot = match (self, &mut scene.spring, &mut scene.placement) {
             (Self::Omega, Spring::Omega(w), _) => w,
             (Self::Mass, Spring::MassStiffness(m, _), _) => m,
             (Self::Stiffness, Spring::MassStiffness(_, k), _) => k,
@@ -364,7 +364,7 @@ mod tests {
         .unwrap();
         assert_eq!(t.params().len(), 2);
         assert_eq!(t.params()[1].field, "kernel.tau");
-        assert_eq!(t.nominal().stiffness, Spring::MassStiffness(1e-3, 1e3));
+        assert_eq!(t.nominal().spring, Spring::MassStiffness(1e-3, 1e3));
         assert_eq!(t.nominal().kernel.unwrap().tau, 2.0);
         assert_eq!(t.sample(7, 3), t.sample(7, 3));
         assert_ne!(t.sample(7, 3), t.sample(8, 3));
@@ -373,7 +373,7 @@ mod tests {
             let s = t.sample(1, i);
             t.sample_into(1, i, &mut reused);
             assert_eq!(s, reused);
-            let Spring::MassStiffness(m, k) = s.stiffness else {
+            let Spring::MassStiffness(m, k) = s.spring else {
                 panic!("{s:?}")
             };
             assert!((0.9e-3..=1.1e-3).contains(&m));

@@ -533,3 +533,22 @@ fn a_stuck_pair_that_reopens_is_a_part_of_its_own() {
     let m = BounceModel::fit(&d);
     assert_eq!((m.reopened, m.single), (0.0, 1.0));
 }
+
+#[test]
+fn a_later_half_that_never_bounced_is_said_so_not_divided_by() {
+    // Ten bouncing presses, then ten clean ones (a single change each).
+    let mut events: Vec<Event> = (0..10).map(|i| press(0.7, 0.01, f64::from(i))).collect();
+    events.extend((10..20).map(|i| Event {
+        switch: "synthetic".into(),
+        origin: format!("event {i}"),
+        kind: Kind::Press,
+        changes: vec![f64::from(i)],
+    }));
+    let groups = group(&events, 1e-12, GAP);
+    let text = bounce_table::calibrate::summary(&groups, 0.99, GAP);
+    assert!(
+        text.contains("covers 10 of the 10 later presses, none of which bounced")
+            && !text.contains("inf times"),
+        "{text}"
+    );
+}

@@ -294,22 +294,26 @@ pub fn summary(groups: &Groups<'_>, percentile: f64, burst_gap: f64) -> String {
                 time(late.iter().copied().fold(0.0, f64::max))
             )
         };
+        let kinds = match kind {
+            capture::Kind::Press => "presses",
+            capture::Kind::Release => "releases",
+        };
+        // A later half that never bounced has no largest bounce to compare with.
+        let held = if later_max > 0.0 {
+            format!(
+                "covers {covered} of the {later} later {kinds} and is {:.2} times the largest of them, {}",
+                half.recommended() / later_max,
+                time(later_max)
+            )
+        } else {
+            format!("covers {covered} of the {later} later {kinds}, none of which bounced")
+        };
         out.push_str(&format!(
-            "- {switch} {}: use {} ({what}, {} events); the same rule fitted on the earlier half ({}) covers {covered} of the {later} later {} and is {:.2} times the largest of them, {}; {late_text}.{}\n",
+            "- {switch} {}: use {} ({what}, {} events); the same rule fitted on the earlier half ({}) {held}; {late_text}.{}\n",
             kind.name(),
             time(w.recommended()),
             d.len(),
             time(half.recommended()),
-            match kind {
-                capture::Kind::Press => "presses",
-                capture::Kind::Release => "releases",
-            },
-            if later_max > 0.0 {
-                half.recommended() / later_max
-            } else {
-                f64::INFINITY
-            },
-            time(later_max),
             w.reason().map_or_else(String::new, |r| format!(" Far beyond the capture: {r}.")),
         ));
     }
