@@ -572,3 +572,125 @@ fn auto_keeps_its_promise_at_ten_one_and_a_tenth_of_a_percent() {
         problems.join("\n")
     );
 }
+
+#[test]
+fn the_exact_tier_solves_kernels_to_1e_9() {
+    // Method::Exact with a relaxation kernel (the core's modal flights) against the reference's
+    // matrix exponential, on the kernel grid: same count, end within 1e-9. The reference is the
+    // looser of the two here: on the 5,450-impact gap it is 3e-10 from a 40-digit solution,
+    // the tier 2e-13 (see `the_exact_kernel_tier_keeps_its_expected_error_to_40_digits`).
+    use contact_bounce::tiers::Tier;
+    use host_tests::grid::kernel_grid;
+    use host_tests::reference::hereditary::simulate as simulate_kernel;
+    let mut worst = (0.0_f64, String::new());
+    let mut f32_figures = 0;
+    for scene in kernel_grid() {
+        let exact = simulate_kernel(&scene.reference, 50_000_000).expect("reference");
+        let core = scene.core().expect("valid");
+        let p = core.predict(Method::Exact {
+            max_impacts: contact_bounce::tiers::EXACT_MAX_IMPACTS,
+        });
+        assert_eq!(p.tier, Tier::Exact, "{}", scene.name);
+        let truth = exact.end_time.expect("a finite end");
+        let t = p.bounce_time().expect("a finite end");
+        let error = (t / truth - 1.0).abs();
+        assert!(error < 1e-9, "{}: {t} vs {truth}", scene.name);
+        match exact.impacts_total {
+            Some(n) => assert_eq!(p.impacts_total.value(), Some(n as f64), "{}", scene.name),
+            None => assert_eq!(p.impacts_total, contact_bounce::tiers::Count::Infinite),
+        }
+        assert!(
+            p.expected_error.is_some_and(|e| e < 1e-10),
+            "{}: {p:?}",
+            scene.name
+        );
+        if error > worst.0 {
+            worst = (error, scene.name.clone());
+        }
+        // f32: within its own expected error of f64's answer.
+        let k = &scene.reference;
+        let narrow = contact_bounce::Scene::new(
+            contact_bounce::Contact {
+                frequency: contact_bounce::Frequency::Omega(k.omega as f32),
+                offset: contact_bounce::Offset::Delta(k.delta as f32),
+                restitution: contact_bounce::Restitution::Coefficient(k.restitution as f32),
+                closing_speed: k.closing_speed as f32,
+                threshold: contact_bounce::Threshold::None,
+            },
+            contact_bounce::Hereditary::exponential(k.kappa as f32, k.tau as f32).unwrap(),
+        )
+        .unwrap()
+        .predict(Method::Exact {
+            max_impacts: contact_bounce::tiers::EXACT_MAX_IMPACTS,
+        });
+        if let Some(e) = narrow.expected_error {
+            let off = (f64::from(narrow.bounce_time().unwrap()) / t - 1.0).abs();
+            assert!(off <= f64::from(e), "f32 {}: {off:e} > {e:e}", scene.name);
+            f32_figures += 1;
+        }
+    }
+    eprintln!(
+        "exact tier with a kernel: worst {:e} at {}",
+        worst.0, worst.1
+    );
+    assert!(f32_figures >= 25, "{f32_figures}");
+}
+
+#[test]
+fn the_exact_kernel_tier_keeps_its_expected_error_to_60_digits() {
+    // Against `scripts/kernel_mp.py` (60-digit modes, steps and roots of its own): the kernel
+    // alone, and with viscous damping, preload and gap, strong and weak kernels. The host
+    // reference is too loose for this (up to 3e-10 on long gaps).
+    use contact_bounce::{
+        Contact, Frequency, Hereditary, Offset, Restitution, Scene, Threshold, Viscous,
+    };
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/../scripts/kernel_mp.py");
+    // (Omega, zeta, Delta, R, v0, tau, kappa)
+    let cases = [
+        (1000.0, 0.0, -1e-3, 0.5, 0.3, 1e-4, 6e9),
+        (1000.0, 0.05, -1e-3, 0.9, 0.1, 1e-3, 2e7),
+        (1000.0, 0.02, 1e-3, 0.9, 3.0, 1e-3, 2e7),
+        (1000.0, 0.0, 1e-3, 0.9, 3.0, 1e-2, 4e4),
+    ];
+    for (omega, zeta, delta, r, v0, tau, kappa) in cases {
+        let out = std::process::Command::new("python3")
+            .arg(script)
+            .args([omega, zeta, delta, r, v0, tau, kappa].map(|x: f64| format!("{x:e}")))
+            .output()
+            .expect("python3 runs");
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let text = String::from_utf8(out.stdout).unwrap();
+        let mut words = text.split_whitespace();
+        let truth: f64 = words.next().unwrap().parse().unwrap();
+        let count = words.next().unwrap();
+        let scene = Scene::new(
+            Contact {
+                frequency: Frequency::Omega(omega),
+                offset: Offset::Delta(delta),
+                restitution: Restitution::Coefficient(r),
+                closing_speed: v0,
+                threshold: Threshold::None,
+            },
+            (
+                Viscous::new(zeta).unwrap(),
+                Hereditary::exponential(kappa, tau).unwrap(),
+            ),
+        )
+        .unwrap();
+        let p = scene.predict(Method::Exact {
+            max_impacts: contact_bounce::tiers::EXACT_MAX_IMPACTS,
+        });
+        let error = (p.bounce_time().unwrap() / truth - 1.0).abs();
+        let expected = p.expected_error.expect("a figure");
+        eprintln!("{zeta} {delta} {r} {tau} {kappa}: error {error:e}, expected {expected:e}");
+        assert!(error <= expected, "{p:?} vs {truth}");
+        match count {
+            "inf" => assert_eq!(p.impacts_total, contact_bounce::tiers::Count::Infinite),
+            n => assert_eq!(p.impacts_total.value(), Some(n.parse::<f64>().unwrap())),
+        }
+    }
+}

@@ -78,6 +78,10 @@ fn the_exact_tier_states_its_work_bound_before_it_runs() {
     assert_eq!(dome.exact_work(1000), Some(1001 * 134));
     let undamped = Scene::new(catalogue::TACTILE_DOME.contact::<f64>(), Undamped).unwrap();
     assert_eq!(undamped.exact_work(1000), None);
+    // A relaxation kernel: its flights are scanned for their return, 4096 evaluations each.
+    let kernel = contact_bounce::Hereditary::exponential(1e6, 1e-3).unwrap();
+    let kernelled = Scene::new(catalogue::TACTILE_DOME.contact::<f64>(), kernel).unwrap();
+    assert_eq!(kernelled.exact_work(1000), Some(1001 * 4096));
     // With a cap of 3 flights the averaged model finishes, and says so.
     let p = dome.predict(Method::Exact { max_impacts: 3 });
     assert!(p
@@ -86,8 +90,28 @@ fn the_exact_tier_states_its_work_bound_before_it_runs() {
 }
 
 #[test]
+fn auto_answers_a_kernel_with_the_exact_tier() {
+    // One relaxation kernel: the exact tier solves its flights, so even 1e-6 is promised.
+    let contact = Contact {
+        frequency: Frequency::Omega(1000.0),
+        offset: Offset::Delta(-1e-3),
+        restitution: Restitution::Coefficient(0.7),
+        closing_speed: 0.5,
+        threshold: Threshold::None,
+    };
+    let kernel = contact_bounce::Hereditary::exponential(1e6, 1e-3).unwrap();
+    let scene = Scene::new(contact, kernel).unwrap();
+    let tolerance = Tolerance::new(1e-6).unwrap();
+    let p = scene.predict(Method::Auto(tolerance));
+    assert_eq!(p.tier, Tier::Exact);
+    assert!(p.promises(tolerance), "{p:?}");
+}
+
+#[test]
 fn auto_says_when_it_cannot_promise() {
-    // A relaxation kernel has no exact tier in the core: at 1e-6 nothing promises.
+    // Two relaxation kernels: the exact tier solves one, so here it answers with the averaged
+    // model, and at 1e-6 nothing promises.
+    let kernel = contact_bounce::Hereditary::exponential(1e6, 1e-3).unwrap();
     let scene = Scene::new(
         Contact {
             frequency: Frequency::Omega(1000.0),
@@ -96,12 +120,13 @@ fn auto_says_when_it_cannot_promise() {
             closing_speed: 0.5,
             threshold: Threshold::None,
         },
-        contact_bounce::Hereditary::exponential(1e6, 1e-3).unwrap(),
+        (kernel, kernel),
     )
     .unwrap();
     let tolerance = Tolerance::new(1e-6).unwrap();
     let p = scene.predict(Method::Auto(tolerance));
     assert!(!p.promises(tolerance));
+    assert_eq!(scene.exact_work(1000), None);
     // It still answers, with the smallest expected error on offer.
     let candidates = [
         Method::Closed,

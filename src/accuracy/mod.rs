@@ -258,10 +258,23 @@ pub(crate) fn with_reduction<F: Float, D: Dissipation<F>>(
     scene: &Scene<F, D>,
     expected: Option<F>,
 ) -> Option<F> {
+    reduced(scene, Some(expected? + static_share(scene)))
+}
+
+/// A kernel's static stiffness over the spring's, kappa tau / Omega^2 (0 without a kernel):
+/// what a tier that averages the kernel's force leaves out.
+pub(crate) fn static_share<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> F {
     let omega = scene.omega();
-    let expected = expected?
-        + F::from_f64(F::BACKEND_ERROR)
-        + scene.dissipation().static_stiffness() / (omega * omega);
+    scene.dissipation().static_stiffness() / (omega * omega)
+}
+
+/// [`with_reduction`] for a tier that solves the kernel's force exactly (the exact tier): the
+/// reduction's error and the backend's, not the static stiffness.
+pub(crate) fn reduced<F: Float, D: Dissipation<F>>(
+    scene: &Scene<F, D>,
+    expected: Option<F>,
+) -> Option<F> {
+    let expected = expected? + F::from_f64(F::BACKEND_ERROR);
     match scene.reduction() {
         Some(r) if !r.exact => {
             if scene.delta() >= F::ZERO || r.frequency_mismatch > c(1.5) {

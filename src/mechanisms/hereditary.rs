@@ -233,6 +233,9 @@ impl<F: Float> Dissipation<F> for Hereditary<F> {
     fn static_stiffness(&self) -> F {
         self.kappa * self.tau
     }
+    fn kernel(&self) -> Option<(F, F)> {
+        Some((self.kappa, self.tau))
+    }
     fn rate(&self, point: &OrbitPoint<F>) -> F {
         let two_pi2 = F::TWO * F::PI * F::PI;
         -two_pi2 * point.impulse() * self.harmonic_sum(point).value

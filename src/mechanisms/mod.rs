@@ -87,6 +87,12 @@ pub trait Dissipation<F: Float>: sealed::Sealed + Copy + Debug {
     fn static_stiffness(&self) -> F {
         F::ZERO
     }
+    /// The one relaxation kernel's (kappa, tau), which the exact tier solves with: `None`
+    /// without a kernel, and where two kernels act (that tier then answers with the averaged
+    /// model).
+    fn kernel(&self) -> Option<(F, F)> {
+        None
+    }
 }
 
 /// No dissipation between impacts: restitution only.
@@ -143,6 +149,9 @@ impl<F: Float, A: Dissipation<F>> Dissipation<F> for Option<A> {
     fn static_stiffness(&self) -> F {
         self.as_ref().map_or(F::ZERO, Dissipation::static_stiffness)
     }
+    fn kernel(&self) -> Option<(F, F)> {
+        self.as_ref().and_then(Dissipation::kernel)
+    }
 }
 
 impl<A: sealed::Sealed, B: sealed::Sealed> sealed::Sealed for (A, B) {}
@@ -166,6 +175,13 @@ impl<F: Float, A: Dissipation<F>, B: Dissipation<F>> Dissipation<F> for (A, B) {
     }
     fn static_stiffness(&self) -> F {
         self.0.static_stiffness() + self.1.static_stiffness()
+    }
+    fn kernel(&self) -> Option<(F, F)> {
+        if self.0.has_kernel() && self.1.has_kernel() {
+            None
+        } else {
+            self.0.kernel().or_else(|| self.1.kernel())
+        }
     }
 }
 

@@ -27,6 +27,8 @@
 //! closed tier's, which this tier returns. The exact solution with a relaxation kernel is not in
 //! the core: there this tier answers with the averaged model (its [`Tier`] says so).
 
+mod kernel;
+
 use crate::accuracy::{self, c};
 use crate::averaged::Averaged;
 use crate::closed::{self, by_regime};
@@ -459,17 +461,77 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
     /// bracketed search), before the averaged model finishes what is left: known before
     /// calling.
     /// `None` where the tier evaluates no flight (the closed tier's exact sums answer, or the
-    /// averaged model where a kernel acts).
+    /// averaged model where the kernel's modes are nearly real or two kernels act). With a
+    /// relaxation kernel a flight takes at most [`FLIGHT_STEPS`](kernel::FLIGHT_STEPS)
+    /// evaluations (its scan for the return included).
     #[must_use]
     pub fn exact_work(&self, max_impacts: u32) -> Option<u64> {
         let d = self.dissipation();
-        let solved = d.dissipates() && !d.has_kernel() && self.delta() != F::ZERO;
-        solved.then(|| (u64::from(max_impacts) + 1) * u64::from(ROOT_STEPS + HALLEY_STEPS))
+        let flights = u64::from(max_impacts) + 1;
+        if d.has_kernel() {
+            return kernel::Kernel::new(self).map(|_| flights * u64::from(kernel::FLIGHT_STEPS));
+        }
+        let solved = d.dissipates() && self.delta() != F::ZERO;
+        solved.then(|| flights * u64::from(ROOT_STEPS + HALLEY_STEPS))
+    }
+}
+
+/// Flights solved one after another from the stop: the free motion of one model (viscous
+/// damping; or a relaxation kernel, whose state is carried from flight to flight).
+pub(crate) trait Flights<F> {
+    /// The flight that leaves the stop at `departure` (m/s, > 0). On a return the model's
+    /// state moves to that impact.
+    fn land(&mut self, departure: F) -> Landing<F>;
+    /// The rest of a Zeno accumulation whose next flight leaves at `departure`, summed in
+    /// closed form, with a bound on its error (s): `None` until that form is exact to
+    /// rounding.
+    fn tail(&self, departure: F) -> Option<(F, F)>;
+}
+
+/// Viscous damping's flights, with the next guess from the last flight.
+#[derive(Debug, Clone, Copy)]
+struct Damped<F> {
+    oscillator: Oscillator<F>,
+    /// Omega |Delta| (m/s).
+    scale: F,
+    /// 1 - R.
+    loss: F,
+    /// The last flight and the undamped flight of its departure.
+    previous: Option<(F, F)>,
+}
+
+impl<F: Float> Flights<F> for Damped<F> {
+    fn land(&mut self, departure: F) -> Landing<F> {
+        let (omega, delta) = (self.oscillator.omega, self.oscillator.delta);
+        let undamped = F::TWO / omega * departure.atan2(-omega * delta);
+        let guessed = match self.previous {
+            Some((flight, undamped_before)) if delta < F::ZERO && undamped_before > F::ZERO => self
+                .oscillator
+                .halley(departure, flight * (undamped / undamped_before)),
+            _ => None,
+        };
+        let landing = guessed.unwrap_or_else(|| self.oscillator.land(departure));
+        if let Landing::Returns { time, .. } = landing {
+            self.previous = Some((time, undamped));
+        }
+        landing
+    }
+
+    fn tail(&self, departure: F) -> Option<(F, F)> {
+        if departure > F::TAIL_CUTOFF * self.scale {
+            return None;
+        }
+        let small = departure / self.scale;
+        let drift = c::<F>(4.0 / 3.0) * self.oscillator.zeta * small / self.loss;
+        (drift <= F::TAIL_CUTOFF).then(|| {
+            let g = self.oscillator.omega * self.scale;
+            let tail = F::TWO * departure / (self.loss * g) * (F::ONE - drift * F::HALF);
+            (tail, tail * c::<F>(4.0) * (drift * drift + small * small))
+        })
     }
 }
 
 /// The exact tier's prediction, solving at most `max_impacts` flights.
-#[allow(clippy::too_many_lines)] // one loop and its hand-over; splitting it would hide the state
 pub(crate) fn predict<F: Float, D: Dissipation<F>>(
     scene: &Scene<F, D>,
     max_impacts: u32,
@@ -479,18 +541,33 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
     }
     let dissipation = scene.dissipation();
     if dissipation.has_kernel() {
-        return Averaged::new(scene, Nodes::N20).predict();
+        return match kernel::Kernel::new(scene) {
+            Some(flights) => solve(scene, max_impacts, flights),
+            None => Averaged::new(scene, Nodes::N20).predict(),
+        };
     }
     if !dissipation.dissipates() || scene.delta() == F::ZERO {
         return closed::predict(scene);
     }
-    let omega = scene.omega();
-    let delta = scene.delta();
-    let zeta = dissipation.damping_ratio();
+    let flights = Damped {
+        oscillator: Oscillator::new(scene.omega(), dissipation.damping_ratio(), scene.delta()),
+        scale: scene.omega() * scene.delta().abs(),
+        loss: scene.loss(),
+        previous: None,
+    };
+    solve(scene, max_impacts, flights)
+}
+
+/// Solves at most `max_impacts` flights of `flights`, then the tail, the end or the averaged
+/// rest; counts and the threshold's crossing as they pass.
+#[allow(clippy::too_many_lines)] // one loop and its hand-over; splitting it would hide the state
+fn solve<F: Float, D: Dissipation<F>, M: Flights<F> + Copy>(
+    scene: &Scene<F, D>,
+    max_impacts: u32,
+    mut flights: M,
+) -> Prediction<F> {
     let loss = scene.loss();
     let restitution = scene.restitution();
-    let oscillator = Oscillator::new(omega, zeta, delta);
-    let scale = omega * delta.abs();
     let zeno = scene.regime() == Regime::ZenoAccumulation;
     let endless = scene.regime() == Regime::Endless;
     let threshold = scene.threshold_impulse();
@@ -506,22 +583,16 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
     // The last flight solved, and the share of the generating impulse lost over it.
     let mut last_flight = F::ZERO;
     let mut last_decay = F::ONE;
-    // The last flight and the undamped flight of its departure: the next guess.
-    let mut previous: Option<(F, F)> = None;
-    let preload = delta < F::ZERO;
+    // The model before the last flight that returned, its departure and its time: the
+    // conditioning of a gap's last return is probed from there.
+    let mut last_return: Option<(M, F, F)> = None;
+    let mut final_departure = F::ZERO;
     let stop = loop {
         // R v as v - r v: keeps the loss where R rounds to 1.
         let departure = speed - loss * speed;
-        if zeno && departure <= F::TAIL_CUTOFF * scale && !(still_above && threshold.is_some()) {
-            let small = departure / scale;
-            let drift = c::<F>(4.0 / 3.0) * zeta * small / loss;
-            if drift <= F::TAIL_CUTOFF {
-                let g = omega * scale;
-                let tail = F::TWO * departure / (loss * g) * (F::ONE - drift * F::HALF);
-                break Stop::Tail {
-                    time: tail,
-                    error: tail * c::<F>(4.0) * (drift * drift + small * small),
-                };
+        if zeno && !(still_above && threshold.is_some()) {
+            if let Some((tail, error)) = flights.tail(departure) {
+                break Stop::Tail { time: tail, error };
             }
         }
         if departure < F::MIN_POSITIVE {
@@ -530,17 +601,11 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
         if solved >= max_impacts {
             break Stop::Capped(F::TWO * departure);
         }
-        let undamped = F::TWO / omega * departure.atan2(-omega * delta);
-        let guessed = match previous {
-            Some((flight, undamped_before)) if preload && undamped_before > F::ZERO => {
-                oscillator.halley(departure, flight * (undamped / undamped_before))
-            }
-            _ => None,
-        };
-        let landing = guessed.unwrap_or_else(|| oscillator.land(departure));
-        match landing {
+        let before = flights;
+        match flights.land(departure) {
             Landing::Stays { grazing: g } => {
                 grazing |= g;
+                final_departure = departure;
                 break Stop::Ended;
             }
             Landing::Returns {
@@ -550,7 +615,7 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
             } => {
                 grazing |= g;
                 time.add(t);
-                previous = Some((t, undamped));
+                last_return = Some((before, departure, t));
                 last_flight = t;
                 last_decay = (departure - restitution * v) / departure;
                 speed = v;
@@ -592,7 +657,11 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
             // one flight.
             approximations = approximations.with(Approximations::MAP_CONTINUED_AVERAGED);
             let averaged = Averaged::new(scene, Nodes::N8);
-            let figure = |dt: F| dt * c::<F>(4.0) * last_decay + last_flight;
+            // (A kernel's static stiffness, which the averaged model leaves out, adds its
+            // share of the rest.)
+            let figure = |dt: F| {
+                dt * (c::<F>(4.0) * last_decay + accuracy::static_share(scene)) + last_flight
+            };
             if still_above {
                 if let Some(j_end) = scene.threshold_generating() {
                     if let (Time::At(dt), Count::Finite(dn), _) = averaged.fall(j, j_end) {
@@ -627,6 +696,30 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
         .seconds()
         .or(last_above_time.seconds())
         .unwrap_or(F::ZERO);
+    // A gap's end hangs on its last two flights: the last return (near grazing, its time
+    // moves by the error of its departure over its small return speed) and the flight that
+    // does not return. Both are solved again from departures off by the rounding: a count that
+    // changes has no figure, a time that moves adds its shift.
+    if matches!(stop, Stop::Ended) && scene.regime() == Regime::LastImpact {
+        let (up, down) = (F::ONE + rounding, F::ONE - rounding);
+        let mut after = flights;
+        if final_departure > F::ZERO
+            && matches!(after.land(final_departure * up), Landing::Returns { .. })
+        {
+            grazing = true;
+        }
+        if let Some((model, departure, t)) = last_return {
+            for factor in [up, down] {
+                let mut probe = model;
+                match probe.land(departure * factor) {
+                    Landing::Returns { time: moved, .. } => {
+                        rest_error = rest_error.max((moved - t).abs());
+                    }
+                    Landing::Stays { .. } => grazing = true,
+                }
+            }
+        }
+    }
     let share = if total > F::ZERO {
         (rest_error / total).min(F::MAX)
     } else {
@@ -635,7 +728,7 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
     let expected = if grazing || rest_error == F::MAX {
         None
     } else {
-        accuracy::with_reduction(scene, Some(rounding + share))
+        accuracy::reduced(scene, Some(rounding + share))
     };
     if expected.is_none() {
         approximations = approximations.with(Approximations::OUTSIDE_VALIDITY);

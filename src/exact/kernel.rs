@@ -1,0 +1,414 @@
+//! The exact tier's flights under an exponential relaxation kernel (docs/physics.md sec. 3):
+//! x'' + 2 zeta Omega x' + Omega^2 x = u, u' = kappa x - u / tau, with u = kappa y the kernel's
+//! force per unit mass (y = integral of exp(-(t - s) / tau) x(s) ds). The state (x, x', u) is
+//! linear between impacts; an impact reverses x' (times R) and leaves u as it is.
+//!
+//! **Modes.** The characteristic polynomial s^3 + a2 s^2 + a1 s + a0, a2 = 2 zeta Omega + beta,
+//! a1 = Omega^2 + 2 zeta Omega beta, a0 = beta (Omega^2 - kappa tau), beta = 1 / tau, has one
+//! real root r1 in (-beta, 0), found as its distance d = r1 + beta from -beta (no cancellation
+//! when the kernel is weak and r1 is within rounding of -beta), and a pair alpha +- i w, with
+//! alpha = -(2 zeta Omega + d) / 2 < 0 and alpha^2 + w^2 = a0 / (beta - d). So
+//! x(t) = c1 e^(r1 t) + e^(alpha t) (p cos w t + q sin w t) in closed form, and u follows mode
+//! by mode (u's part of a mode e^(s t) is kappa / (s + beta) times x's). Where the pair is
+//! real or nearly so (its damping ratio above 0.995) the modal form loses digits: the tier
+//! answers with the averaged model there, and says so.
+//!
+//! **Short flights** are evaluated from the Taylor series of (x - Delta) / t, whose
+//! coefficients follow from the characteristic polynomial's recurrence, so the Zeno tail's tiny
+//! flights keep their digits (as in the viscous flights).
+//!
+//! **Returns.** A flight is scanned in steps of 1/16 of the pair's period: a return is bracketed
+//! where x - Delta turns non-negative, or at a maximum (x' falling through 0) that reaches the
+//! stop, and solved by Newton steps kept inside the bracket. A gap's flight ends without return
+//! once c1+ e^(r1 t) + e^(alpha t) hypot(p, q), a bound on x from then on, is below Delta. All
+//! of it spends at most [`FLIGHT_STEPS`] evaluations per flight; beyond, the return is
+//! undecided and the prediction gives no expected error.
+//!
+//! **Zeno tail.** Near the stop the body falls back at g = -Omega^2 Delta + u, which drifts at
+//! g' = kappa Delta - u / tau. To first order in the flights' size (the series of one flight
+//! gives t = (2a/g)(1 - 2 zeta Omega (2a/g) / 6 - g' (2a/g) / (3 g)) and a return speed
+//! a (1 - 2 zeta Omega (2a/g) / 3 + g' (2a/g) / (3 g))), the rest of the accumulation lasts
+//! T = (q / r)(1 - (q / r)(zeta Omega / 3 + g' / (3 g))), q = 2a / g, r = 1 - R. It is summed
+//! once q / r times those rates and Omega a / g are below [`Float::TAIL_CUTOFF`]; what is left
+//! out is of their squares' order.
+
+use super::{sin_cos_small, Flights, Landing, GRAZING_EPSILONS, ROOT_STEPS, SERIES_LIMIT};
+use crate::accuracy::c;
+use crate::mechanisms::Dissipation;
+use crate::{Float, Scene};
+
+/// Most evaluations of the motion per flight with a kernel: the scan for the return (steps of
+/// 1/16 of a period), its maxima and the root, together.
+pub(crate) const FLIGHT_STEPS: u32 = 4096;
+
+/// Steps of the scan per period of the pair.
+const STEPS_PER_PERIOD: f64 = 16.0;
+/// The pair's damping ratio beyond which the modal form is not used (see the module docs).
+const PAIR_DAMPING_LIMIT: f64 = 0.995;
+/// Most terms of the short-time series.
+const SERIES_TERMS: u32 = 48;
+/// Most bisections of a maximum's time.
+const PEAK_STEPS: u32 = 64;
+
+/// The free motion with a kernel, and the kernel's force at the next departure.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Kernel<F> {
+    omega2: F,
+    /// 2 zeta Omega (1/s).
+    damping: F,
+    kappa: F,
+    /// 1 / tau (1/s).
+    beta: F,
+    delta: F,
+    /// 1 - R.
+    loss: F,
+    /// The characteristic polynomial's coefficients.
+    a2: F,
+    a1: F,
+    a0: F,
+    /// The real root r1 and its distance r1 + beta from -beta.
+    real: F,
+    shifted: F,
+    /// The pair alpha +- i w.
+    alpha: F,
+    w: F,
+    /// The fastest rate of the free motion (1/s): the series serves below SERIES_LIMIT / lambda.
+    lambda: F,
+    /// The scan's step (s).
+    step: F,
+    /// u at the next departure (m/s^2).
+    force: F,
+}
+
+/// One flight's modal coefficients: x = c1 e^(r1 t) + e^(alpha t) (p cos + q sin), and u's.
+#[derive(Debug, Clone, Copy)]
+struct Modes<F> {
+    c1: F,
+    p: F,
+    q: F,
+    u1: F,
+    uc: F,
+    us: F,
+    /// x''(0) (m/s^2).
+    x2: F,
+}
+
+/// The real root's distance d = r1 + beta in (0, beta), the root of
+/// d ((d - beta)(d - beta + 2 zeta Omega) + Omega^2) = kappa, by Newton steps kept inside the bracket (the left side is -kappa at 0
+/// and beta Omega^2 - kappa > 0 at beta). `None` if it does not settle in 200 steps.
+fn real_root<F: Float>(omega2: F, damping: F, kappa: F, beta: F) -> Option<F> {
+    let quadratic = |d: F| (d - beta) * (d - beta + damping) + omega2;
+    let (mut low, mut high) = (F::ZERO, beta);
+    let start = kappa / quadratic(F::ZERO);
+    let mut d = if start > low && start < high {
+        start
+    } else {
+        beta * F::HALF
+    };
+    for _ in 0..200 {
+        let f = d * quadratic(d) - kappa;
+        if f == F::ZERO {
+            return Some(d);
+        }
+        if f < F::ZERO {
+            low = d;
+        } else {
+            high = d;
+        }
+        let slope = quadratic(d) + d * (F::TWO * (d - beta) + damping);
+        let newton = d - f / slope;
+        let next = if newton > low && newton < high {
+            newton
+        } else {
+            low + (high - low) * F::HALF
+        };
+        let settled =
+            (next - d).abs() <= F::TWO * F::EPSILON * d || high - low <= F::TWO * F::EPSILON * high;
+        d = next;
+        if settled {
+            return Some(d);
+        }
+    }
+    None
+}
+
+impl<F: Float> Kernel<F> {
+    /// The scene's kernel flights, from the steady kernel force of the generating orbit at the
+    /// first impact (the state a contact that has bounced this way long enough would hold).
+    /// `None` without exactly one kernel, where the pair is (nearly) real, or where a constant
+    /// overflows the float.
+    pub(crate) fn new<D: Dissipation<F>>(scene: &Scene<F, D>) -> Option<Self> {
+        let dissipation = scene.dissipation();
+        let (kappa, tau) = dissipation.kernel()?;
+        let omega = scene.omega();
+        let omega2 = omega * omega;
+        let damping = F::TWO * dissipation.damping_ratio() * omega;
+        let beta = F::ONE / tau;
+        let delta = scene.delta();
+        let shifted = real_root(omega2, damping, kappa, beta)?;
+        let a0 = beta * (omega2 - kappa * tau);
+        let e1 = damping + shifted;
+        let e0 = a0 / (beta - shifted);
+        let disc = e0 - e1 * e1 * c::<F>(0.25);
+        let limit = c::<F>(1.0 - PAIR_DAMPING_LIMIT * PAIR_DAMPING_LIMIT);
+        if disc.is_nan() || disc < limit * e0 {
+            return None;
+        }
+        let w = disc.sqrt();
+        let lambda = (beta - shifted).max(e0.sqrt());
+        // The steady kernel state of the generating orbit with J = 2 v0, leaving the stop at v0
+        // and back after its period T: y = (beta Delta - v0 coth(beta T / 2)) / (beta^2 +
+        // Omega^2), coth(x) = 1 + 2 / expm1(2 x).
+        let v0 = scene.closing_speed();
+        let period = scene.orbit().at(F::TWO * v0).period();
+        let coth = F::ONE + F::TWO / (beta * period).exp_m1();
+        let force = kappa * (beta * delta - v0 * coth) / (beta * beta + omega2);
+        let kernel = Self {
+            omega2,
+            damping,
+            kappa,
+            beta,
+            delta,
+            loss: scene.loss(),
+            a2: damping + beta,
+            a1: omega2 + damping * beta,
+            a0,
+            real: shifted - beta,
+            shifted,
+            alpha: -e1 * F::HALF,
+            w,
+            lambda,
+            step: F::PI / (c::<F>(STEPS_PER_PERIOD / 2.0) * w),
+            force,
+        };
+        let finite = [
+            kernel.a1,
+            kernel.a0,
+            e0,
+            w,
+            lambda,
+            kernel.step,
+            force,
+            kernel.real,
+        ]
+        .iter()
+        .all(|x| x.is_finite());
+        finite.then_some(kernel)
+    }
+
+    /// The modes of the flight leaving the stop at speed `a` with the kernel force `force`.
+    fn modes(&self, a: F) -> Modes<F> {
+        let (x0, x1) = (self.delta, -a);
+        let x2 = -self.omega2 * self.delta + self.damping * a + self.force;
+        let (alpha, w, r1) = (self.alpha, self.w, self.real);
+        let e0 = alpha * alpha + w * w;
+        let denominator = (r1 - alpha) * (r1 - alpha) + w * w;
+        let c1 = (x2 - F::TWO * alpha * x1 + e0 * x0) / denominator;
+        let p = x0 - c1;
+        let q = (x1 - r1 * c1 - alpha * p) / w;
+        // u's part of a mode e^(s t) is kappa / (s + beta) times x's.
+        let u1 = self.kappa * c1 / self.shifted;
+        let (re, im) = (alpha + self.beta, w);
+        let m = self.kappa / (re * re + im * im);
+        let (gr, gi) = (m * re, -m * im);
+        Modes {
+            c1,
+            p,
+            q,
+            u1,
+            uc: gr * p + gi * q,
+            us: gr * q - gi * p,
+            x2,
+        }
+    }
+
+    /// (x - Delta, x', u) at `t` in closed form. x - Delta is summed from the modes' departures,
+    /// c1 expm1(r1 t) + p (expm1(alpha t) cos + (cos - 1)) + q e^(alpha t) sin, with
+    /// cos - 1 = -sin^2 / (1 + cos) where cos > 0: no term is the difference of two numbers near
+    /// Delta, so a flight just past the series' reach keeps its digits (x - Delta from x lost
+    /// log10(|Delta| / |x - Delta|) of them: 2e-4 of the bounce in f32 on a strong kernel).
+    fn closed(&self, m: &Modes<F>, t: F) -> (F, F, F) {
+        let e = (self.real * t).exp_m1();
+        let decay = (self.alpha * t).exp_m1();
+        let (s, co) = sin_cos_small(self.w * t);
+        let (alpha, w) = (self.alpha, self.w);
+        let versine = if co > F::ZERO {
+            -s * s / (F::ONE + co)
+        } else {
+            co - F::ONE
+        };
+        let y = m.c1 * e + m.p * (decay * co + versine) + m.q * (decay + F::ONE) * s;
+        let (e, decay) = (e + F::ONE, decay + F::ONE);
+        let v = m.c1 * self.real * e
+            + decay * ((alpha * m.p + w * m.q) * co + (alpha * m.q - w * m.p) * s);
+        let u = m.u1 * e + decay * (m.uc * co + m.us * s);
+        (y, v, u)
+    }
+
+    /// ((x - Delta) / t, x') from the Taylor series about the departure: D0 = Delta, D1 = -a,
+    /// D2 = x''(0) / 2, D(n+3) = -(a2 D(n+2) / (n+3) + a1 D(n+1) / ((n+3)(n+2))
+    /// + a0 D(n) / ((n+3)(n+2)(n+1))).
+    fn series(&self, m: &Modes<F>, a: F, t: F) -> (F, F) {
+        let (mut d0, mut d1, mut d2) = (self.delta, -a, m.x2 * F::HALF);
+        let mut over_t = d1;
+        let mut slope = d1;
+        let mut power = F::ONE;
+        let mut quiet = 0;
+        // d2 is the coefficient of t^2 in x: of t in (x - Delta) / t.
+        for n in 2..SERIES_TERMS {
+            let nf = F::from_u32(n);
+            power *= t;
+            let term = d2 * power;
+            over_t += term;
+            slope += nf * term;
+            if nf * term.abs() <= F::EPSILON * c::<F>(0.01) * (nf * over_t.abs()).max(slope.abs()) {
+                quiet += 1;
+                if quiet >= 3 {
+                    break;
+                }
+            } else {
+                quiet = 0;
+            }
+            // d(n+1) from d(n), d(n-1), d(n-2): k = n - 2 in the recurrence.
+            let (n1, n0, nm) = (nf + F::ONE, nf, nf - F::ONE);
+            let next =
+                -(self.a2 * d2 / n1 + self.a1 * d1 / (n1 * n0) + self.a0 * d0 / (n1 * n0 * nm));
+            d0 = d1;
+            d1 = d2;
+            d2 = next;
+        }
+        (over_t, slope)
+    }
+
+    /// (x - Delta, x'): the series for short times, the closed form beyond.
+    fn eval(&self, m: &Modes<F>, a: F, t: F) -> (F, F) {
+        if self.lambda * t <= c(SERIES_LIMIT) {
+            let (over_t, slope) = self.series(m, a, t);
+            (over_t * t, slope)
+        } else {
+            let (y, v, _) = self.closed(m, t);
+            (y, v)
+        }
+    }
+
+    fn grazes(&self, y: F) -> bool {
+        y.abs() <= c::<F>(GRAZING_EPSILONS) * F::EPSILON * self.delta.abs()
+    }
+
+    /// A bound on x from `t` on (every mode decays).
+    fn ceiling(&self, m: &Modes<F>, t: F) -> F {
+        m.c1.max(F::ZERO) * (self.real * t).exp() + (self.alpha * t).exp() * m.p.hypot(m.q)
+    }
+}
+
+impl<F: Float> Flights<F> for Kernel<F> {
+    #[allow(clippy::too_many_lines)] // the scan, its maxima and the root share one budget
+    fn land(&mut self, a: F) -> Landing<F> {
+        let m = self.modes(a);
+        let mut spent = 0;
+        let mut grazing = false;
+        // Scan for a bracket [low, high] of the return.
+        let (mut low, mut rising) = (F::ZERO, false);
+        let bracket = loop {
+            if spent >= FLIGHT_STEPS {
+                return Landing::Stays { grazing: true };
+            }
+            spent += 1;
+            let t = low + self.step;
+            let (y, v) = self.eval(&m, a, t);
+            if y >= F::ZERO {
+                break (low, t);
+            }
+            if rising && v <= F::ZERO {
+                // A maximum in (low, t): does it reach the stop?
+                let (mut up, mut down) = (low, t);
+                for _ in 0..PEAK_STEPS {
+                    let mid = up + (down - up) * F::HALF;
+                    if mid <= up || mid >= down || spent >= FLIGHT_STEPS {
+                        break;
+                    }
+                    spent += 1;
+                    if self.eval(&m, a, mid).1 > F::ZERO {
+                        up = mid;
+                    } else {
+                        down = mid;
+                    }
+                }
+                let top = self.eval(&m, a, up).0;
+                grazing |= self.grazes(top);
+                if top >= F::ZERO {
+                    break (low, up);
+                }
+            }
+            if self.delta > F::ZERO && self.ceiling(&m, t) < self.delta {
+                return Landing::Stays { grazing };
+            }
+            rising = v > F::ZERO;
+            low = t;
+        };
+        let (mut low, mut high) = bracket;
+        // Newton from the free fall 2a / x''(0) on a short flight, else from the middle.
+        let guess = F::TWO * a / m.x2;
+        let mut t = if guess > low && guess < high {
+            guess
+        } else {
+            low + (high - low) * F::HALF
+        };
+        let mut speed = F::ZERO;
+        let mut steps = 0;
+        while steps < ROOT_STEPS && spent < FLIGHT_STEPS {
+            steps += 1;
+            spent += 1;
+            let (y, v) = self.eval(&m, a, t);
+            speed = v;
+            if y == F::ZERO {
+                break;
+            }
+            if y < F::ZERO {
+                low = t;
+            } else {
+                high = t;
+            }
+            let newton = t - y / v;
+            let next = if v > F::ZERO && newton > low && newton < high {
+                newton
+            } else {
+                low + (high - low) * F::HALF
+            };
+            let settled = (next - t).abs() <= F::TWO * F::EPSILON * t
+                || high - low <= F::TWO * F::EPSILON * high;
+            t = next;
+            if settled {
+                speed = self.eval(&m, a, t).1;
+                break;
+            }
+        }
+        if speed > F::ZERO {
+            self.force = self.closed(&m, t).2;
+            Landing::Returns {
+                time: t,
+                speed,
+                grazing,
+            }
+        } else {
+            Landing::Stays { grazing: true }
+        }
+    }
+
+    fn tail(&self, a: F) -> Option<(F, F)> {
+        let g = -self.omega2 * self.delta + self.force;
+        if g.is_nan() || g <= F::ZERO {
+            return None;
+        }
+        let span = F::TWO * a / g / self.loss;
+        let growth = (self.kappa * self.delta - self.beta * self.force) / g;
+        let third = c::<F>(1.0 / 3.0);
+        let first = span * (self.damping * c::<F>(1.0 / 6.0) + growth * third);
+        let drift = span * (self.damping * c::<F>(1.0 / 6.0) + growth.abs() * third);
+        let small = self.omega2.sqrt() * a / g;
+        (drift <= F::TAIL_CUTOFF && small <= F::TAIL_CUTOFF).then(|| {
+            let time = span * (F::ONE - first);
+            (time, time * c::<F>(4.0) * (drift * drift + small * small))
+        })
+    }
+}
