@@ -42,12 +42,13 @@ pub enum Method<F> {
         /// Cap on iterated impacts (the averaged model finishes beyond it).
         max_impacts: u32,
     },
-    /// The exact solution, impact by impact (one body, restitution and viscous damping),
-    /// solving at most this many flights (the averaged model finishes beyond; see
-    /// [`Scene::exact_work`] for the bound on its work). Its expected error is the float's
-    /// rounding. Scenes without viscous damping or with Delta = 0 get the closed tier's exact
-    /// sums; with a relaxation kernel it answers with the averaged model (20 nodes), whose
-    /// [`Tier`](crate::tiers::Tier) and expected error say so.
+    /// The exact solution, impact by impact (one body, restitution, viscous damping and one
+    /// exponential relaxation kernel), solving at most this many flights (the averaged model
+    /// finishes beyond; see [`Scene::exact_work`] for the bound on its work). Its expected
+    /// error is the float's rounding. Scenes without viscous damping or with Delta = 0 get the
+    /// closed tier's exact sums; with two kernels, or a kernel whose modes are nearly
+    /// degenerate (their pair's damping ratio above 0.995), it answers with the averaged model
+    /// (20 nodes), whose [`Tier`](crate::tiers::Tier) and expected error say so.
     Exact {
         /// Cap on solved flights ([`EXACT_MAX_IMPACTS`](crate::tiers::EXACT_MAX_IMPACTS) is the
         /// default).
@@ -55,9 +56,10 @@ pub enum Method<F> {
     },
     /// The cheapest tier whose expected error (docs/physics.md sec. 6) is within the tolerance:
     /// closed, then the map or the averaged model by their cost, then the exact tier, which
-    /// promises the float's rounding on every one-body scene without a kernel. Where nothing
-    /// does (a kernel; f32 over very many impacts; a return decided by rounding) the smallest
-    /// expected error wins: check [`Prediction::promises`]. Its worst-case work is the exact
+    /// promises the float's rounding on every one-body scene with at most one kernel. Where
+    /// nothing does (two kernels; f32 over very many impacts; a return decided by rounding) the
+    /// smallest expected error wins: check [`Prediction::promises`]. Its worst-case work is the
+    /// exact
     /// tier's at [`EXACT_MAX_IMPACTS`](crate::tiers::EXACT_MAX_IMPACTS)
     /// ([`Scene::exact_work`]); firmware that cannot afford that names a tier, or
     /// `Method::Exact` with a smaller cap.

@@ -1,5 +1,5 @@
-//! The exact tier: one body against a stop with restitution and viscous damping, solved impact
-//! by impact (docs/physics.md sec. 1), with nothing approximated but the rounding of the float.
+//! The exact tier: one body against a stop with restitution, viscous damping and an exponential
+//! relaxation kernel, solved impact by impact (docs/physics.md sec. 1), with nothing approximated but the rounding of the float.
 //!
 //! Between impacts x'' + 2 zeta Omega x' + Omega^2 x = 0 is solved in closed form (under-,
 //! critically and over-damped). The next impact is the root of y = x - Delta in the bracket
@@ -24,8 +24,14 @@
 //! (a / (Omega |Delta|))^2 of the tail.
 //!
 //! Scenes without viscous damping, or with Delta = 0, have exact sums in closed form: the
-//! closed tier's, which this tier returns. The exact solution with a relaxation kernel is not in
-//! the core: there this tier answers with the averaged model (its [`Tier`] says so).
+//! closed tier's, which this tier returns. A relaxation kernel adds a third state, its force,
+//! carried from flight to flight: its flights are solved mode by mode (`kernel.rs`), and where
+//! the modes are nearly degenerate, or two kernels act, this tier answers with the averaged model
+//! (its [`Tier`] says so).
+//!
+//! A gap's end hangs on its last return, which may nearly graze the stop: the last two flights
+//! are solved again from departures off by the accumulated rounding, and the time they move is
+//! part of the expected error (a count that changes withdraws it).
 
 mod kernel;
 
