@@ -694,3 +694,35 @@ fn the_exact_kernel_tier_keeps_its_expected_error_to_60_digits() {
         }
     }
 }
+
+#[test]
+fn auto_promises_on_every_kernel_scene_and_keeps_it() {
+    // With a relaxation kernel the exact tier answers where nothing cheaper promises: every
+    // scene of the kernel grid gets a promise at 10 %, 1 % and 0.1 %, and keeps it against the
+    // reference (within the reference's own 1e-9 on these scenes).
+    use contact_bounce::Tolerance;
+    use host_tests::grid::kernel_grid;
+    use host_tests::reference::hereditary::simulate as simulate_kernel;
+    let mut tiers = std::collections::BTreeMap::new();
+    for scene in kernel_grid() {
+        let truth = simulate_kernel(&scene.reference, 50_000_000)
+            .expect("reference")
+            .end_time
+            .expect("a finite end");
+        let core = scene.core().expect("valid");
+        for tol in [0.1, 0.01, 0.001] {
+            let tolerance = Tolerance::new(tol).expect("valid");
+            let p = core.predict(Method::Auto(tolerance));
+            assert!(p.promises(tolerance), "{} at {tol}: {p:?}", scene.name);
+            let error = (p.bounce_time().expect("finite") / truth - 1.0).abs();
+            assert!(
+                error <= tol,
+                "{} at {tol}: {:?} off {error:e}",
+                scene.name,
+                p.tier
+            );
+            *tiers.entry(format!("{:?}", p.tier)).or_insert(0) += 1;
+        }
+    }
+    eprintln!("tiers Auto took on the kernel grid: {tiers:?}");
+}
