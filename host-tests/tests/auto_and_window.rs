@@ -81,7 +81,10 @@ fn the_exact_tier_states_its_work_bound_before_it_runs() {
     // A relaxation kernel: its flights are scanned for their return, 4096 evaluations each.
     let kernel = contact_bounce::Hereditary::exponential(1e6, 1e-3).unwrap();
     let kernelled = Scene::new(catalogue::TACTILE_DOME.contact::<f64>(), kernel).unwrap();
-    assert_eq!(kernelled.exact_work(1000), Some(1001 * 4096));
+    assert_eq!(
+        kernelled.exact_work(1000),
+        Some(1001 * u64::from(contact_bounce::tiers::KERNEL_FLIGHT_STEPS))
+    );
     // With a cap of 3 flights the averaged model finishes, and says so.
     let p = dome.predict(Method::Exact { max_impacts: 3 });
     assert!(p

@@ -21,7 +21,7 @@
 //! where x - Delta turns non-negative, or at a maximum (x' falling through 0) that reaches the
 //! stop, and solved by Newton steps kept inside the bracket. A gap's flight ends without return
 //! once c1+ e^(r1 t) + e^(alpha t) hypot(p, q), a bound on x from then on, is below Delta. All
-//! of it spends at most [`FLIGHT_STEPS`] evaluations per flight; beyond, the return is
+//! of it spends at most [`KERNEL_FLIGHT_STEPS`] evaluations per flight; beyond, the return is
 //! undecided and the prediction gives no expected error.
 //!
 //! **Zeno tail.** Near the stop the body falls back at g = -Omega^2 Delta + u, which drifts at
@@ -39,7 +39,7 @@ use crate::{Float, Scene};
 
 /// Most evaluations of the motion per flight with a kernel: the scan for the return (steps of
 /// 1/16 of a period), its maxima and the root, together.
-pub(crate) const FLIGHT_STEPS: u32 = 4096;
+pub const KERNEL_FLIGHT_STEPS: u32 = 4096;
 
 /// Steps of the scan per period of the pair.
 const STEPS_PER_PERIOD: f64 = 16.0;
@@ -310,7 +310,7 @@ impl<F: Float> Flights<F> for Kernel<F> {
         // Scan for a bracket [low, high] of the return.
         let (mut low, mut rising) = (F::ZERO, false);
         let bracket = loop {
-            if spent >= FLIGHT_STEPS {
+            if spent >= KERNEL_FLIGHT_STEPS {
                 return Landing::Stays { grazing: true };
             }
             spent += 1;
@@ -324,7 +324,7 @@ impl<F: Float> Flights<F> for Kernel<F> {
                 let (mut up, mut down) = (low, t);
                 for _ in 0..PEAK_STEPS {
                     let mid = up + (down - up) * F::HALF;
-                    if mid <= up || mid >= down || spent >= FLIGHT_STEPS {
+                    if mid <= up || mid >= down || spent >= KERNEL_FLIGHT_STEPS {
                         break;
                     }
                     spent += 1;
@@ -356,7 +356,7 @@ impl<F: Float> Flights<F> for Kernel<F> {
         };
         let mut speed = F::ZERO;
         let mut steps = 0;
-        while steps < ROOT_STEPS && spent < FLIGHT_STEPS {
+        while steps < ROOT_STEPS && spent < KERNEL_FLIGHT_STEPS {
             steps += 1;
             spent += 1;
             let (y, v) = self.eval(&m, a, t);

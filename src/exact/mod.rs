@@ -35,6 +35,8 @@
 
 mod kernel;
 
+pub use kernel::KERNEL_FLIGHT_STEPS;
+
 use crate::accuracy::{self, c};
 use crate::averaged::Averaged;
 use crate::closed::{self, by_regime};
@@ -468,14 +470,14 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
     /// calling.
     /// `None` where the tier evaluates no flight (the closed tier's exact sums answer, or the
     /// averaged model where the kernel's modes are nearly real or two kernels act). With a
-    /// relaxation kernel a flight takes at most [`FLIGHT_STEPS`](kernel::FLIGHT_STEPS)
+    /// relaxation kernel a flight takes at most [`KERNEL_FLIGHT_STEPS`]
     /// evaluations (its scan for the return included).
     #[must_use]
     pub fn exact_work(&self, max_impacts: u32) -> Option<u64> {
         let d = self.dissipation();
         let flights = u64::from(max_impacts) + 1;
         if d.has_kernel() {
-            return kernel::Kernel::new(self).map(|_| flights * u64::from(kernel::FLIGHT_STEPS));
+            return kernel::Kernel::new(self).map(|_| flights * u64::from(KERNEL_FLIGHT_STEPS));
         }
         let solved = d.dissipates() && self.delta() != F::ZERO;
         solved.then(|| flights * u64::from(ROOT_STEPS + HALLEY_STEPS))
