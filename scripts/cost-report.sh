@@ -167,6 +167,49 @@ fi
 # (the same skeleton, no crate code). The count is the tier's call (and its window) between
 # the second and third marks: instructions under QEMU, cycles under simavr.
 tiers=(tb1v_window restitution_averaged closed averaged map auto exact)
+declare -A crate cycles heavy
+largest() { # elf empty-elf nm -> the 4 largest code symbols the empty firmware lacks, "name size"
+  python3 - "$1" "$2" "$3" <<'PY'
+import re, subprocess, sys
+def v0(name):
+    # Rust's v0 mangling (the AVR nightly's), read loosely: the identifiers of the path and of
+    # its generic arguments, in order (crate hashes dropped).
+    if not name.startswith("_R"):
+        return name
+    rest, out, i = name[2:], [], 0
+    while i < len(rest):
+        if rest[i] == "B" or (rest[i] in "CN" and rest[i + 1:i + 2] == "s"):
+            # a back-reference, or a crate's or a namespace's hash
+            end = rest.find("_", i + 1)
+            i = i + 1 if end < 0 else end + 1
+            continue
+        m = re.match(r"\d+", rest[i:])
+        if not m:
+            i += 1
+            continue
+        j = i + len(m.group())
+        j += rest[j:j + 1] == "_"
+        out.append(rest[j:j + int(m.group())])
+        i = j + int(m.group())
+    return "::".join(out) or name
+def code(elf):
+    out = subprocess.run([sys.argv[3], "--defined-only", "-S", "--demangle", elf],
+                         capture_output=True, text=True, check=True).stdout
+    syms = {}
+    for line in out.splitlines():
+        parts = line.split(" ", 3)
+        if len(parts) == 4 and parts[2] in ("t", "T"):
+            name = v0(re.sub(r"::h[0-9a-f]{16}$", "", parts[3]))
+            for a, b in (("_$LT$", "<"), ("$LT$", "<"), ("$GT$", ">"), ("$u20$", " "),
+                         ("$RF$", "&"), ("$C$", ","), ("..", "::")):
+                name = name.replace(a, b)
+            syms[name] = int(parts[1], 16)
+    return syms
+empty = code(sys.argv[2])
+extra = sorted(((s, n) for n, s in code(sys.argv[1]).items() if n not in empty), reverse=True)
+print(", ".join(f"`{n}` {s}" for s, n in extra[:4]).replace("|", "\\|"))
+PY
+}
 marks_qemu() { # elf target -> one count per interval between marks
   local mark
   mark=$("$llvm_bin/llvm-nm" "$1" | awk '$3 == "cost_mark" { print $1 }')
@@ -207,6 +250,9 @@ for features in "" micromath; do
       mapfile -t c < <(marks_qemu "$elf" "$target")
       name=${tier//_/-}${features:+ ($features)}
       echo "| $target | $name | $((text - empty)) | $text | $data | $bss | ${c[1]} |" >> "$out"
+      crate["$target $name"]=$((text - empty))
+      cycles["$target $name"]=${c[1]}
+      heavy["$target $name"]=$(largest "$elf" "target/$target/release/examples/tier_empty" "$llvm_bin/llvm-nm")
     done
   done
 done
@@ -227,11 +273,52 @@ if [ "$uno" = 1 ]; then
       mark=$(avr-nm "$elf" | awk '$3 == "cost_mark" { print $1 }')
       mapfile -t c < <("$tmp/simavr-cycles" "$elf" "$mark" | grep -E '^[0-9]+$' | awk 'NR > 1 { print $1 - prev } { prev = $1 }')
       echo "| avr-atmega328p | $name | $((text - empty)) | $text | $data | $bss | ${c[1]} |" >> "$out"
+      cycles["avr-atmega328p $name"]=${c[1]}
+      heavy["avr-atmega328p $name"]=$(largest "$elf" target/avr-none/release/examples/tier_empty.elf avr-nm)
     fi
+    crate["avr-atmega328p $name"]=$(awk -F'|' -v n="$name" '$2 ~ /avr-atmega328p/ && $3 ~ " "n" " { print $4 + 0 }' "$out" | tail -n 1)
   done
 else
   sed -i "s/EMPTYU/(no nightly here)/" "$out"
 fi
+
+# The goals of the crate's share (f32, libm; the Uno with avr-libc's float routines), each with
+# its gap and, on Cortex-M, the largest code the firmware holds beyond the empty one.
+{
+  echo
+  echo "## Goals"
+  echo
+  echo "Crate bytes (and cycles on the Uno) against the goals set for Arduino-class firmware. Where a size"
+  echo "goal is missed, the last column names the four largest functions the firmware links beyond the"
+  echo "empty one (bytes, from \`llvm-nm\` or \`avr-nm\`): what holds it. A firmware that does not fit"
+  echo "has no elf to read."
+  echo
+  echo "| target | firmware | measure | goal | measured | met | largest code beyond the empty firmware |"
+  echo "|---|---|---|---:|---:|---|---|"
+  goal() { # target firmware measure goal value
+    local met=yes holds=""
+    if [ -z "$5" ]; then met="not measured: the firmware does not fit"
+    elif [ "$5" -gt "$4" ]; then
+      met="no: $(( $5 - $4 )) over"
+      [ "$3" = "crate bytes" ] && holds=${heavy["$1 $2"]:-}
+    fi
+    echo "| $1 | $2 | $3 | $4 | ${5:--} | $met | $holds |"
+  }
+  goal thumbv7em-none-eabihf tb1v-window "crate bytes" 1024 "${crate[thumbv7em-none-eabihf tb1v-window]:-}"
+  goal thumbv7em-none-eabihf restitution-averaged "crate bytes" 2048 "${crate[thumbv7em-none-eabihf restitution-averaged]:-}"
+  goal thumbv7em-none-eabihf auto "crate bytes" 8192 "${crate[thumbv7em-none-eabihf auto]:-}"
+  goal thumbv6m-none-eabi auto "crate bytes" 12288 "${crate[thumbv6m-none-eabi auto]:-}"
+  if [ "$uno" = 1 ]; then
+    for tier in "${tiers[@]}"; do
+      [ "$tier" = auto ] && continue
+      goal avr-atmega328p "${tier//_/-}" "crate bytes" 12288 "${crate[avr-atmega328p ${tier//_/-}]:-}"
+    done
+    goal avr-atmega328p auto "crate bytes" 16384 "${crate[avr-atmega328p auto]:-}"
+    goal avr-atmega328p tb1v-window cycles 10000 "${cycles[avr-atmega328p tb1v-window]:-}"
+    goal avr-atmega328p restitution-averaged "cycles (N8; the goal is for N4)" 500000 "${cycles[avr-atmega328p restitution-averaged]:-}"
+    goal avr-atmega328p map cycles 300000 "${cycles[avr-atmega328p map]:-}"
+  fi
+} >> "$out"
 
 cat "$out"
 if [ "${1:-}" = "--write" ]; then
