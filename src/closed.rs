@@ -5,7 +5,7 @@
 //! to trust it. A form that does not apply to the scene's regime returns `None`.
 
 use crate::error::{derived, finite, non_negative, physical, Error, Parameter, Reason};
-use crate::mechanisms::{offset_class, Asymptote, Dissipation, Offset};
+use crate::mechanisms::{offset_class, Asymptote, Dissipation, OffsetClass};
 use crate::orbit::Orbit;
 use crate::prediction::{Approximations, ClosedForm, Count, Prediction, Tier, Time};
 use crate::quadrature::{panel, Compensated, Nodes};
@@ -181,7 +181,7 @@ pub(crate) fn asymptotic_count<F: Float>(
     }
     let omega = orbit.omega();
     match offset_class(orbit) {
-        Offset::Preload => {
+        OffsetClass::Preload => {
             let k = omega * omega * orbit.delta().abs();
             if j2 <= F::ZERO {
                 Count::Infinite
@@ -215,8 +215,8 @@ pub(crate) fn asymptotic_count<F: Float>(
                 Count::Infinite
             }
         }
-        Offset::Gap | Offset::Grazing => {
-            let period = if offset_class(orbit) == Offset::Gap {
+        OffsetClass::Gap | OffsetClass::Grazing => {
+            let period = if offset_class(orbit) == OffsetClass::Gap {
                 F::TWO * F::PI / omega
             } else {
                 F::PI / omega
@@ -534,11 +534,11 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Predi
     // The named forms are the asymptote's integral to J = 0; report them as they are.
     let named = match (offset_class(scene.orbit()), dissipation.has_kernel()) {
         // Unbounded: a time beyond the float's range becomes `Never` with its flag, below.
-        (Offset::Preload, false) => scene.t_b1v_unbounded().map(|e| (ClosedForm::Tb1v, e)),
-        (Offset::Gap, false) if scene.loss() > F::ZERO => {
+        (OffsetClass::Preload, false) => scene.t_b1v_unbounded().map(|e| (ClosedForm::Tb1v, e)),
+        (OffsetClass::Gap, false) if scene.loss() > F::ZERO => {
             scene.t_b2r_unbounded().map(|e| (ClosedForm::Tb2r, e))
         }
-        (Offset::Gap, false) => scene.t_b2_unbounded().map(|e| (ClosedForm::Tb2, e)),
+        (OffsetClass::Gap, false) => scene.t_b2_unbounded().map(|e| (ClosedForm::Tb2, e)),
         _ => None,
     };
     let (form, expected, end_time) = match named {

@@ -51,7 +51,7 @@ impl Default for Settings {
 
 /// One bounce estimate: the time, an upper bound (widened by its expected error), and how.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Estimate {
+pub struct BounceEstimate {
     /// Bounce time (s): the end, else the last impact above the threshold.
     pub bounce: f64,
     /// Bounce time widened by the expected error (the exact reference: the time itself).
@@ -113,11 +113,11 @@ impl Answer {
 ///
 /// # Errors
 /// The scene's invalid field, or an endless bounce (no threshold time either).
-pub fn estimate(input: &SceneInput, tolerance: f64) -> Result<Estimate, FieldError> {
+pub fn estimate(input: &SceneInput, tolerance: f64) -> Result<BounceEstimate, FieldError> {
     let answer = answer(input, Tolerance::new(tolerance)?)?;
     let (bounce, upper, _) = answer.bounds()?;
     Ok(match answer {
-        Answer::Model(p) => Estimate {
+        Answer::Model(p) => BounceEstimate {
             bounce,
             upper,
             regime: p.regime.name().to_owned(),
@@ -129,7 +129,7 @@ pub fn estimate(input: &SceneInput, tolerance: f64) -> Result<Estimate, FieldErr
             let regime = out.regime.name();
             #[allow(clippy::cast_precision_loss)]
             let impacts = out.impacts_above.map(|n| n as f64);
-            Estimate {
+            BounceEstimate {
                 bounce,
                 upper,
                 regime: regime.to_owned(),
@@ -173,7 +173,7 @@ pub struct Analysis {
     /// Name.
     pub name: String,
     /// The nominal scene's estimate.
-    pub nominal: Estimate,
+    pub nominal: BounceEstimate,
     /// The window (s): the Monte Carlo's percentile when there are ranges, else the
     /// nominal upper bound.
     pub window: f64,

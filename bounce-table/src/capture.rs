@@ -30,22 +30,15 @@ impl Kind {
     }
 }
 
-/// How a logic level maps to the contact.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum Polarity {
-    /// High = open (pull-up, switch to ground).
-    #[default]
-    ActiveLow,
-    /// High = closed.
-    ActiveHigh,
-}
+/// How a logic level maps to the contact: the core's own type (its debouncer reads pins the
+/// same way).
+pub use contact_bounce::debounce::Polarity;
 
-impl Polarity {
-    fn closed(self, high: bool) -> bool {
-        match self {
-            Polarity::ActiveLow => !high,
-            Polarity::ActiveHigh => high,
-        }
+/// True when the pin level `high` means the contact is closed.
+fn is_closed(polarity: Polarity, high: bool) -> bool {
+    match polarity {
+        Polarity::ActiveLow => !high,
+        Polarity::ActiveHigh => high,
     }
 }
 
@@ -207,7 +200,7 @@ pub fn read_csv(file: &str, text: &str, polarity: Polarity) -> Result<Stream, Ca
         let Some(high) = level(value) else {
             return Err(error(file, line, format!("level {value:?} is not 0 or 1")));
         };
-        let now_closed = polarity.closed(high);
+        let now_closed = is_closed(polarity, high);
         if start.is_none() {
             if !t.is_finite() {
                 return Err(error(
@@ -419,7 +412,7 @@ pub fn read_vcd(
                 ))
             }
         };
-        let now_closed = polarity.closed(high);
+        let now_closed = is_closed(polarity, high);
         let Some(t) = now else {
             return Err(error(file, line, "a value before the first time stamp"));
         };
@@ -613,7 +606,7 @@ pub fn read_jsonl(
         let Some(first) = pairs.next() else {
             return Err(error(file, line, "`events` is empty: no starting level"));
         };
-        let mut closed = Polarity::ActiveLow.closed(first?.1);
+        let mut closed = is_closed(Polarity::ActiveLow, first?.1);
         let closed_before = closed;
         if (kind == Kind::Press) == closed_before {
             return Err(error(
@@ -632,7 +625,7 @@ pub fn read_jsonl(
             push_change(
                 &mut changes,
                 &mut closed,
-                Polarity::ActiveLow.closed(high),
+                is_closed(Polarity::ActiveLow, high),
                 t,
             )
             .map_err(|reason| error(file, line, reason))?;

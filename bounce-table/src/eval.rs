@@ -10,7 +10,7 @@ use std::io::{BufRead, Write};
 
 use contact_bounce::{
     scene::Dissipation, tiers::Count, tiers::MapImpacts, tiers::Time, tiers::DEFAULT_MAX_IMPACTS,
-    Float, Method as CoreMethod, Nodes, Prediction, Tolerance,
+    Float, Method, Nodes, Prediction, Tolerance,
 };
 use contact_bounce_reference::{self as reference, OneBody};
 use serde_json::{json, Value};
@@ -19,10 +19,10 @@ use crate::scene_input::{FieldError, SceneInput, Spring};
 
 /// The tier asked for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Method {
+pub enum EvalMethod {
     /// The exact reference (host only).
     Exact,
-    /// The core's exact tier (`Method::Exact`, the same in firmware).
+    /// The core's exact tier (the core's `Method::Exact`, the same in firmware).
     Tier,
     /// The semi-discrete map.
     Map,
@@ -34,7 +34,7 @@ pub enum Method {
     Auto,
 }
 
-impl Method {
+impl EvalMethod {
     fn name(self) -> &'static str {
         match self {
             Self::Exact => "exact",
@@ -71,7 +71,7 @@ impl Precision {
 #[derive(Debug, Clone)]
 pub struct Options {
     /// Tier.
-    pub method: Method,
+    pub method: EvalMethod,
     /// Relative tolerance for auto.
     pub tolerance: f64,
     /// The float the core's tiers run in.
@@ -93,7 +93,7 @@ pub fn options(args: &[String]) -> Result<Options, String> {
 
 fn options_unescaped(args: &[String]) -> Result<Options, String> {
     let mut out = Options {
-        method: Method::Auto,
+        method: EvalMethod::Auto,
         tolerance: 0.01,
         precision: Precision::F64,
         nodes: Nodes::N8,
@@ -105,12 +105,12 @@ fn options_unescaped(args: &[String]) -> Result<Options, String> {
         match arg.as_str() {
             "--method" => {
                 out.method = match value("--method")?.as_str() {
-                    "exact" => Method::Exact,
-                    "exact-tier" => Method::Tier,
-                    "map" => Method::Map,
-                    "averaged" => Method::Averaged,
-                    "closed" => Method::Closed,
-                    "auto" => Method::Auto,
+                    "exact" => EvalMethod::Exact,
+                    "exact-tier" => EvalMethod::Tier,
+                    "map" => EvalMethod::Map,
+                    "averaged" => EvalMethod::Averaged,
+                    "closed" => EvalMethod::Closed,
+                    "auto" => EvalMethod::Auto,
                     other => {
                         return Err(format!(
                             "--method: '{other}' is not one of exact, exact-tier, map, averaged, closed, auto"
@@ -201,17 +201,17 @@ fn restitution_rounding<F: Float>(restitution: f64) -> f64 {
 fn core_result<F: Float>(input: &SceneInput, options: &Options) -> Result<Value, FieldError> {
     let scene = input.core::<F>()?;
     let method = match options.method {
-        Method::Map => CoreMethod::Map {
+        EvalMethod::Map => Method::Map {
             max_impacts: DEFAULT_MAX_IMPACTS,
         },
-        Method::Averaged => CoreMethod::Averaged(options.nodes),
-        Method::Closed => CoreMethod::Closed,
-        Method::Tier => CoreMethod::Exact {
+        EvalMethod::Averaged => Method::Averaged(options.nodes),
+        EvalMethod::Closed => Method::Closed,
+        EvalMethod::Tier => Method::Exact {
             max_impacts: contact_bounce::tiers::EXACT_MAX_IMPACTS,
         },
-        Method::Auto | Method::Exact => CoreMethod::Auto(
-            Tolerance::new(F::from_f64(options.tolerance)).map_err(FieldError::from)?,
-        ),
+        EvalMethod::Auto | EvalMethod::Exact => {
+            Method::Auto(Tolerance::new(F::from_f64(options.tolerance)).map_err(FieldError::from)?)
+        }
     };
     let p: Prediction<F> = scene.predict(method);
     // The scene was given in f64 and is evaluated in F: where R is near 1, rounding R moves
@@ -221,7 +221,7 @@ fn core_result<F: Float>(input: &SceneInput, options: &Options) -> Result<Value,
     let expected = p.expected_error.map(|e| e.to_f64() + rounding);
     // The averaged tier counts in real numbers; the others in whole impacts.
     let whole = !matches!(p.tier, contact_bounce::tiers::Tier::Averaged(_));
-    let first = if options.method == Method::Map {
+    let first = if options.method == EvalMethod::Map {
         let impacts: Vec<Value> = MapImpacts::new(&scene, DEFAULT_MAX_IMPACTS)
             .take(5)
             .map(|i| json!([i.time.to_f64(), i.impulse.to_f64()]))
@@ -250,7 +250,7 @@ fn core_result<F: Float>(input: &SceneInput, options: &Options) -> Result<Value,
         "expected_error": expected.map(|e| significant(e, 4)),
         "precision": options.precision.name(),
     });
-    if options.method == Method::Auto {
+    if options.method == EvalMethod::Auto {
         if let (Some(map), Ok(t)) = (
             out.as_object_mut(),
             Tolerance::new(F::from_f64(options.tolerance)),
@@ -363,7 +363,7 @@ pub fn evaluate(
         (name, e)
     })?;
     let result = match (options.method, options.precision) {
-        (Method::Exact, _) => exact_result(&input),
+        (EvalMethod::Exact, _) => exact_result(&input),
         (_, Precision::F32) => core_result::<f32>(&input, options),
         (_, Precision::F64) => core_result::<f64>(&input, options),
     };

@@ -11,7 +11,7 @@ use std::fs::File;
 use std::io::{self, BufReader, BufWriter, Read, Seek, SeekFrom, Write};
 use std::path::PathBuf;
 
-use crate::analysis::{Analysis, Estimate, MonteCarlo, Sensitivity};
+use crate::analysis::{Analysis, BounceEstimate, MonteCarlo, Sensitivity};
 
 /// Analyses written once and read back any number of times, in order.
 pub struct Spool {
@@ -290,7 +290,7 @@ fn read_analysis(r: &mut impl Read) -> io::Result<Analysis> {
     };
     Ok(Analysis {
         name,
-        nominal: Estimate {
+        nominal: BounceEstimate {
             bounce,
             upper,
             regime,
@@ -313,7 +313,7 @@ mod tests {
     fn analysis(name: &str, with_spread: bool) -> Analysis {
         Analysis {
             name: name.to_owned(),
-            nominal: Estimate {
+            nominal: BounceEstimate {
                 bounce: 1.5e-4,
                 upper: f64::INFINITY,
                 regime: "zeno_accumulation".to_owned(),

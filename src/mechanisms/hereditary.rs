@@ -1,6 +1,6 @@
 //! Hereditary (viscoelastic) damping with an exponential relaxation kernel: docs/physics.md sec. 3.
 
-use super::{offset_class, sealed, Asymptote, Dissipation, Offset};
+use super::{offset_class, sealed, Asymptote, Dissipation, OffsetClass};
 use crate::error::{derived, physical, positive, Error, Parameter, Reason};
 use crate::orbit::{Orbit, OrbitPoint};
 use crate::Float;
@@ -244,14 +244,14 @@ impl<F: Float> Dissipation<F> for Hereditary<F> {
         let mut out = Asymptote::zero();
         match offset_class(orbit) {
             // theta -> 0: the rate vanishes faster than J (like J theta^2).
-            Offset::Preload => {}
+            OffsetClass::Preload => {}
             // theta -> pi: the k = 1 term gives -2 Omega^2 Delta^2 g(Omega) / J.
-            Offset::Gap => {
+            OffsetClass::Gap => {
                 let q = orbit.offset_impulse();
                 out.inverse = q * q * self.per_frequency(orbit.omega()) * F::HALF;
             }
             // theta = pi/2 for every J: the rate is exactly linear in J.
-            Offset::Grazing => out.linear = -self.rate(&orbit.at(F::ONE)),
+            OffsetClass::Grazing => out.linear = -self.rate(&orbit.at(F::ONE)),
         }
         out
     }

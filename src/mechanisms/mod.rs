@@ -191,19 +191,19 @@ pub type AnyDissipation<F> = (Option<Viscous<F>>, Option<Hereditary<F>>);
 
 /// The sign class of Delta, which decides each mechanism's small-J behaviour.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Offset {
+pub(crate) enum OffsetClass {
     Preload,
     Grazing,
     Gap,
 }
 
-pub(crate) fn offset_class<F: Float>(orbit: &Orbit<F>) -> Offset {
+pub(crate) fn offset_class<F: Float>(orbit: &Orbit<F>) -> OffsetClass {
     let delta = orbit.delta();
     if delta < F::ZERO {
-        Offset::Preload
+        OffsetClass::Preload
     } else if delta > F::ZERO {
-        Offset::Gap
+        OffsetClass::Gap
     } else {
-        Offset::Grazing
+        OffsetClass::Grazing
     }
 }

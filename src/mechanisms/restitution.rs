@@ -1,6 +1,6 @@
 //! Loss at the impacts: the restitution term of E1 (docs/physics.md sec. 3).
 
-use super::{offset_class, Asymptote, Offset};
+use super::{offset_class, Asymptote, OffsetClass};
 use crate::orbit::{Orbit, OrbitPoint};
 use crate::Float;
 
@@ -26,9 +26,9 @@ pub(crate) fn restitution_asymptote<F: Float>(one_minus_r: F, orbit: &Orbit<F>) 
     let omega = orbit.omega();
     let mut out = Asymptote::zero();
     match offset_class(orbit) {
-        Offset::Preload => out.constant = one_minus_r * omega * omega * orbit.delta().abs(),
-        Offset::Gap => out.linear = one_minus_r * omega / (F::TWO * F::PI),
-        Offset::Grazing => out.linear = one_minus_r * omega / F::PI,
+        OffsetClass::Preload => out.constant = one_minus_r * omega * omega * orbit.delta().abs(),
+        OffsetClass::Gap => out.linear = one_minus_r * omega / (F::TWO * F::PI),
+        OffsetClass::Grazing => out.linear = one_minus_r * omega / F::PI,
     }
     out
 }

@@ -1,6 +1,6 @@
 //! Viscous damping: docs/physics.md sec. 3.
 
-use super::{offset_class, sealed, Asymptote, Dissipation, Offset};
+use super::{offset_class, sealed, Asymptote, Dissipation, OffsetClass};
 use crate::error::{non_negative, Error, Parameter};
 use crate::orbit::{Orbit, OrbitPoint};
 use crate::Float;
@@ -92,13 +92,13 @@ impl<F: Float> Dissipation<F> for Viscous<F> {
         let mut out = Asymptote::zero();
         match offset_class(orbit) {
             // -(2/3) zeta Omega J
-            Offset::Preload => out.linear = F::TWO * self.zeta * omega / F::from_f64(3.0),
+            OffsetClass::Preload => out.linear = F::TWO * self.zeta * omega / F::from_f64(3.0),
             // -4 zeta Omega^3 Delta^2 / J = -zeta Omega q^2 / J
-            Offset::Gap => {
+            OffsetClass::Gap => {
                 let q = orbit.offset_impulse();
                 out.inverse = self.zeta * omega * q * q;
             }
-            Offset::Grazing => out.linear = self.zeta * omega,
+            OffsetClass::Grazing => out.linear = self.zeta * omega,
         }
         out
     }

@@ -25,7 +25,7 @@ pub use plot::plot;
 pub use predictive::{inverse, Part, Predictive};
 pub use report::{assess, describe, summary};
 pub use window::{
-    chronological_cover, earlier_count, window, Cover, Window, FAR_BEYOND, MIN_EVENTS,
+    chronological_cover, earlier_count, window, CaptureWindow, Cover, FAR_BEYOND, MIN_EVENTS,
 };
 
 fn sorted(mut v: Vec<f64>) -> Vec<f64> {

@@ -6,7 +6,7 @@ use crate::capture;
 /// A debounce window from a capture: the fitted model's predictive percentile, never below
 /// the largest bounce observed.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Window {
+pub struct CaptureWindow {
     /// The largest bounce observed (s; 0 with no events).
     pub observed: f64,
     /// The percentile of the fitted model's posterior predictive (s): the bounce of the next
@@ -29,7 +29,7 @@ pub const MIN_EVENTS: usize = 10;
 /// Beyond this multiple of the largest bounce observed, a window says why.
 pub const FAR_BEYOND: f64 = 2.0;
 
-impl Window {
+impl CaptureWindow {
     /// The window: the predictive percentile, or the largest bounce observed if that is
     /// longer (a window below a bounce already seen is wrong whatever the model says).
     #[must_use]
@@ -72,9 +72,9 @@ impl Window {
 
 /// The window of one switch and kind at `percentile` of the fitted model's predictive.
 #[must_use]
-pub fn window(d: &[&capture::Description], percentile: f64) -> Window {
+pub fn window(d: &[&capture::Description], percentile: f64) -> CaptureWindow {
     let model = BounceModel::fit(d);
-    Window {
+    CaptureWindow {
         observed: d.iter().map(|x| x.bounce).fold(0.0, f64::max),
         predictive: model.predictive.as_ref().map(|p| p.quantile(percentile)),
         bouncing: d.iter().filter(|x| super::fit::bounces(x)).count(),
@@ -87,7 +87,7 @@ pub fn window(d: &[&capture::Description], percentile: f64) -> Window {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Cover {
     /// The window fitted on the earlier events.
-    pub window: Window,
+    pub window: CaptureWindow,
     /// Later events whose bounce it covers.
     pub covered: usize,
     /// Later events.
