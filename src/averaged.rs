@@ -7,7 +7,6 @@
 //! asymptote of E1 (docs/physics.md sec. 4) is integrated in closed form: its relative error there
 //! is O(cutoff), on a tail that is itself O(cutoff) of the total.
 
-use crate::closed::{asymptotic_count, asymptotic_time, by_regime};
 use crate::error::{non_negative, Error, Parameter, Reason};
 use crate::mechanisms::Dissipation;
 use crate::prediction::{Approximations, Count, Prediction, Tier, Time};
@@ -182,7 +181,7 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
             return (Time::Never, Count::Infinite, false);
         }
         let q = scene.orbit().offset_impulse();
-        let ti2 = crate::closed::inverse_tangent_integral;
+        let ti2 = crate::quadrature::inverse_tangent_integral;
         let ratio_ln = if low > F::ZERO {
             Some(high.ln() - low.ln())
         } else {
@@ -252,11 +251,11 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
         };
         if low < asymptote_top {
             let a = self.scene.asymptote();
-            let Time::At(t) = asymptotic_time(a, asymptote_top, low) else {
+            let Time::At(t) = a.fall_time(asymptote_top, low) else {
                 return (Time::Never, Count::Infinite, capped);
             };
             time += t;
-            return match asymptotic_count(a, self.scene.orbit(), asymptote_top, low) {
+            return match a.fall_count(self.scene.orbit(), asymptote_top, low) {
                 Count::Finite(n) => (Time::At(time), Count::Finite(impacts + n), capped),
                 Count::Infinite => (Time::At(time), Count::Infinite, capped),
             };
@@ -272,9 +271,7 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
     }
 
     fn predict_unchecked(&self) -> Prediction<F> {
-        if let Some(p) =
-            by_regime(self.scene).or_else(|| crate::exact::ends_at_first_contact(self.scene))
-        {
+        if let Some(p) = crate::regime::answer(self.scene) {
             return p;
         }
         let start = self.scene.start_impulse();
@@ -434,9 +431,9 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
             from * (-a.linear * tau).exp()
         };
         let more = if impulse > F::ZERO {
-            asymptotic_count(a, scene.orbit(), from, impulse)
+            a.fall_count(scene.orbit(), from, impulse)
         } else {
-            asymptotic_count(a, scene.orbit(), from, F::ZERO)
+            a.fall_count(scene.orbit(), from, F::ZERO)
         };
         Ok(EnvelopePoint {
             impulse,

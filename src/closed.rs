@@ -5,10 +5,10 @@
 //! to trust it. A form that does not apply to the scene's regime returns `None`.
 
 use crate::error::{derived, finite, non_negative, physical, Error, Parameter, Reason};
-use crate::mechanisms::{offset_class, Asymptote, Dissipation, OffsetClass};
-use crate::orbit::Orbit;
+use crate::float::{log_growth, log_growth_of_ratio};
+use crate::mechanisms::{offset_class, Dissipation, OffsetClass};
 use crate::prediction::{Approximations, ClosedForm, Count, Prediction, Tier, Time};
-use crate::quadrature::{panel, Compensated, Nodes};
+use crate::quadrature::Compensated;
 use crate::regime::Regime;
 use crate::{accuracy, Float, Scene};
 
@@ -30,41 +30,6 @@ impl<F: Float> Estimate<F> {
     /// e.g. t_b2 with a tiny zeta in f32): `None` is "beyond this float's range", never inf.
     fn in_range(self) -> Option<Self> {
         (self.time.is_finite() && self.time >= F::ZERO).then_some(self)
-    }
-}
-
-/// ln(1 + z) / z for z > -1, accurate as z -> 0 (series below |z| = 1e-4).
-pub(crate) fn ln1p_ratio<F: Float>(z: F) -> F {
-    if z.abs() < F::from_f64(1e-4) {
-        F::ONE - z * (F::HALF - z * (F::ONE / F::from_f64(3.0) - z / F::from_f64(4.0)))
-    } else {
-        z.ln_1p() / z
-    }
-}
-
-/// s ln(1 + k s) / (k s) for k >= 0, s > 0 (a closed-form fall time): accurate as k s -> 0
-/// (series) and finite when k s overflows (ln(k s) = ln k + ln s).
-pub(crate) fn log_growth<F: Float>(s: F, k: F) -> F {
-    if k <= F::ZERO {
-        return s;
-    }
-    let z = k * s;
-    if z.is_finite() {
-        s * ln1p_ratio(z)
-    } else {
-        (k.ln() + s.ln()) / k
-    }
-}
-
-/// [`log_growth`] of s = `num / den` (both > 0), still finite where that ratio overflows
-/// (ln s = ln num - ln den): f32, j0 / r with r = 4e-10 and v0 = 1e30 overflowed, and t_b1v
-/// became `Never` where it is 3.3 s.
-pub(crate) fn log_growth_of_ratio<F: Float>(num: F, den: F, k: F) -> F {
-    let s = num / den;
-    if s.is_finite() || k <= F::ZERO {
-        log_growth(s, k)
-    } else {
-        (k.ln() + num.ln() - den.ln()) / k
     }
 }
 
@@ -145,112 +110,6 @@ pub fn preload_viscous_bounce_time<F: Float>(
     })
 }
 
-/// Time for J to fall from `j1` to `j2` (0 <= j2 <= j1) on the asymptote
-/// J' = -(constant + linear J + inverse / J) (at most two terms are non-zero).
-pub(crate) fn asymptotic_time<F: Float>(a: &Asymptote<F>, j1: F, j2: F) -> Time<F> {
-    if j1 <= j2 {
-        return Time::At(F::ZERO);
-    }
-    let drop = j1 - j2;
-    if a.inverse > F::ZERO {
-        // integral of J dJ / (B J^2 + C): t_b2r, and t_b2 when B = 0.
-        let squares = drop * (j1 + j2);
-        let base = a.linear * j2 * j2 + a.inverse;
-        Time::At(log_growth_of_ratio(squares, base, a.linear) * F::HALF)
-    } else if a.constant > F::ZERO {
-        // integral of dJ / (A + B J): t_b1v, and t_b1 when B = 0.
-        let base = a.constant + a.linear * j2;
-        Time::At(log_growth_of_ratio(drop, base, a.linear))
-    } else if a.linear > F::ZERO && j2 > F::ZERO {
-        Time::At((j1.ln() - j2.ln()) / a.linear)
-    } else {
-        Time::Never
-    }
-}
-
-/// Impacts while J falls from `j1` to `j2` on the asymptote: the integral of dJ / (|E1| T)
-/// with the small-J period (preload J / (Omega^2 |Delta|), gap 2 pi / Omega, Delta = 0 pi / Omega).
-pub(crate) fn asymptotic_count<F: Float>(
-    a: &Asymptote<F>,
-    orbit: &Orbit<F>,
-    j1: F,
-    j2: F,
-) -> Count<F> {
-    if j1 <= j2 {
-        return Count::Finite(F::ZERO);
-    }
-    let omega = orbit.omega();
-    match offset_class(orbit) {
-        OffsetClass::Preload => {
-            let k = omega * omega * orbit.delta().abs();
-            if j2 <= F::ZERO {
-                Count::Infinite
-            } else if a.constant > F::ZERO {
-                // (k/A) ln(j1 (A + B j2) / (j2 (A + B j1))) = (k/A) ln1p(u),
-                // u = A (j1 - j2) / (j2 (A + B j1)): no cancellation as A -> 0. The ratio
-                // (j1 - j2) / j2 first, so that j2 (A + B j1) cannot underflow (f32).
-                let rate = a.constant + a.linear * j1;
-                let scale = (j1 - j2) / j2 / rate;
-                let u = a.constant * scale;
-                if scale.is_finite() && u.is_finite() {
-                    Count::Finite(k * scale * ln1p_ratio(u))
-                } else {
-                    // The ratio beyond the float's range: u in logarithms (k / A stays near
-                    // 1 / r). u itself may still be small (A tiny: f32, r = 4e-10 and
-                    // v0 = 1e30 gave u = 0.02 and a negative count when ln1p(u) was taken as
-                    // ln u), so ln1p(u) exactly where u is a number, and ln u only beyond.
-                    let ln_u = a.constant.ln() + (j1 - j2).ln() - j2.ln() - rate.ln();
-                    let u = ln_u.exp();
-                    let ln1p_u = if u.is_finite() { u.ln_1p() } else { ln_u };
-                    let n = k / a.constant * ln1p_u;
-                    if n.is_finite() {
-                        Count::Finite(n)
-                    } else {
-                        Count::Infinite
-                    }
-                }
-            } else if a.linear > F::ZERO {
-                Count::Finite(k / a.linear * (F::ONE / j2 - F::ONE / j1))
-            } else {
-                Count::Infinite
-            }
-        }
-        OffsetClass::Gap | OffsetClass::Grazing => {
-            let period = if offset_class(orbit) == OffsetClass::Gap {
-                F::TWO * F::PI / omega
-            } else {
-                F::PI / omega
-            };
-            match asymptotic_time(a, j1, j2) {
-                Time::At(t) => Count::Finite(t / period),
-                Time::Never => Count::Infinite,
-            }
-        }
-    }
-}
-
-/// The inverse tangent integral Ti2(x) = integral_0^x atan(y)/y dy, x > 0: 12-point
-/// Gauss-Legendre on [0, min(x, 1/x)] (error below 1e-16: the integrand is analytic in a
-/// Bernstein ellipse of radius 4.6), and Ti2(x) = Ti2(1/x) + (pi/2) ln x above 1.
-pub(crate) fn inverse_tangent_integral<F: Float>(x: F) -> F {
-    if x <= F::ZERO {
-        // (The rule's nodes would evaluate atan(0) / 0.)
-        return F::ZERO;
-    }
-    let (inner, reflect) = if x > F::ONE {
-        (F::ONE / x, true)
-    } else {
-        (x, false)
-    };
-    let mut f = |y: F| (y.atan() / y, F::ZERO);
-    let (value, _) = panel(F::ZERO, inner, Nodes::N12, &mut f);
-    if reflect {
-        value + F::HALF * F::PI * x.ln()
-    } else {
-        value
-    }
-}
-
 /// Below this the terms atan(y) of a sum are replaced by their series tail.
 const SMALL_TERM: f64 = 1e-3;
 /// Above this ln(1/R) the sums are direct (at most ~1500 terms); below, Euler-Maclaurin.
@@ -280,7 +139,9 @@ fn euler_maclaurin<F: Float>(x: F, decay: F) -> F {
     let d1 = v / (F::ONE + v2);
     let d3 = v * (F::ONE - F::from_f64(6.0) * v2 + v2 * v2)
         / ((F::ONE + v2) * (F::ONE + v2) * (F::ONE + v2));
-    inverse_tangent_integral(x) / decay + x.atan() * F::HALF + decay * d1 / F::from_f64(12.0)
+    crate::quadrature::inverse_tangent_integral(x) / decay
+        + x.atan() * F::HALF
+        + decay * d1 / F::from_f64(12.0)
         - decay * decay * decay * d3 / F::from_f64(720.0)
 }
 
@@ -493,36 +354,11 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
     }
 }
 
-/// A prediction that needs no model: single impact or periodic.
-pub(crate) fn by_regime<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Option<Prediction<F>> {
-    let base = Prediction {
-        regime: scene.regime(),
-        end_time: Time::Never,
-        last_above_time: Time::Never,
-        impacts_above: Count::Infinite,
-        impacts_total: Count::Infinite,
-        tier: Tier::Regime,
-        approximations: accuracy::reduction_flags(scene),
-        expected_error: Some(F::ZERO),
-    };
-    match scene.regime() {
-        Regime::SingleImpact => Some(Prediction {
-            end_time: Time::At(F::ZERO),
-            last_above_time: Time::At(F::ZERO),
-            impacts_above: Count::Finite(F::ONE),
-            impacts_total: Count::Finite(F::ONE),
-            ..base
-        }),
-        Regime::Periodic => Some(base),
-        _ => None,
-    }
-}
-
 /// The closed-form tier: the exact discrete sums where they exist (no damping between impacts,
 /// or Delta = 0 without a kernel), else the closed forms of sec. 5 (t_b1v, t_b2r and the
 /// small-impulse asymptote they come from).
 pub(crate) fn predict<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Prediction<F> {
-    if let Some(p) = by_regime(scene).or_else(|| crate::exact::ends_at_first_contact(scene)) {
+    if let Some(p) = crate::regime::answer(scene) {
         return p;
     }
     let dissipation = scene.dissipation();
@@ -546,14 +382,14 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Predi
         None => (
             ClosedForm::Asymptotic,
             None,
-            asymptotic_time(asymptote, start, F::ZERO),
+            asymptote.fall_time(start, F::ZERO),
         ),
     };
-    let impacts_total = add_one(asymptotic_count(asymptote, scene.orbit(), start, F::ZERO));
+    let impacts_total = add_one(asymptote.fall_count(scene.orbit(), start, F::ZERO));
     let (last_above_time, impacts_above) = match scene.threshold_generating() {
         Some(end) => (
-            asymptotic_time(asymptote, start, end).min_with(end_time),
-            add_one(asymptotic_count(asymptote, scene.orbit(), start, end)).min_with(impacts_total),
+            asymptote.fall_time(start, end).min_with(end_time),
+            add_one(asymptote.fall_count(scene.orbit(), start, end)).min_with(impacts_total),
         ),
         None => (end_time, impacts_total),
     };

@@ -586,6 +586,41 @@ fn ln_1p_f32(x: f32) -> f32 {
     }
 }
 
+/// ln(1 + z) / z for z > -1, accurate as z -> 0 (series below |z| = 1e-4).
+pub(crate) fn ln1p_ratio<F: Float>(z: F) -> F {
+    if z.abs() < F::from_f64(1e-4) {
+        F::ONE - z * (F::HALF - z * (F::ONE / F::from_f64(3.0) - z / F::from_f64(4.0)))
+    } else {
+        z.ln_1p() / z
+    }
+}
+
+/// s ln(1 + k s) / (k s) for k >= 0, s > 0 (a closed-form fall time): accurate as k s -> 0
+/// (series) and finite when k s overflows (ln(k s) = ln k + ln s).
+pub(crate) fn log_growth<F: Float>(s: F, k: F) -> F {
+    if k <= F::ZERO {
+        return s;
+    }
+    let z = k * s;
+    if z.is_finite() {
+        s * ln1p_ratio(z)
+    } else {
+        (k.ln() + s.ln()) / k
+    }
+}
+
+/// [`log_growth`] of s = `num / den` (both > 0), still finite where that ratio overflows
+/// (ln s = ln num - ln den): f32, j0 / r with r = 4e-10 and v0 = 1e30 overflowed, and t_b1v
+/// became `Never` where it is 3.3 s.
+pub(crate) fn log_growth_of_ratio<F: Float>(num: F, den: F, k: F) -> F {
+    let s = num / den;
+    if s.is_finite() || k <= F::ZERO {
+        log_growth(s, k)
+    } else {
+        (k.ln() + num.ln() - den.ln()) / k
+    }
+}
+
 #[cfg(test)]
 mod tests {
     #[cfg(not(feature = "micromath"))]

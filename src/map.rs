@@ -16,7 +16,6 @@
 //! impacts themselves.
 
 use crate::averaged::Averaged;
-use crate::closed::{asymptotic_count, asymptotic_time, by_regime};
 use crate::exact::{Landing, Oscillator};
 use crate::mechanisms::Dissipation;
 use crate::prediction::{Approximations, Count, Prediction, Tier, Time};
@@ -130,9 +129,7 @@ impl<'a, F: Float, D: Dissipation<F>> MapImpacts<'a, F, D> {
     #[must_use]
     pub fn zeno_tail_time(&self) -> Option<F> {
         match self.end {
-            Some(MapEnd::ZenoTail(j)) => {
-                asymptotic_time(self.scene.asymptote(), j, F::ZERO).seconds()
-            }
+            Some(MapEnd::ZenoTail(j)) => self.scene.asymptote().fall_time(j, F::ZERO).seconds(),
             _ => None,
         }
     }
@@ -251,7 +248,7 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
     scene: &Scene<F, D>,
     max_impacts: u32,
 ) -> Prediction<F> {
-    if let Some(p) = by_regime(scene).or_else(|| crate::exact::ends_at_first_contact(scene)) {
+    if let Some(p) = crate::regime::answer(scene) {
         return p;
     }
     let orbit = scene.orbit();
@@ -363,10 +360,7 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
                     (dt, dn)
                 } else {
                     let a = scene.asymptote();
-                    (
-                        asymptotic_time(a, j, low),
-                        asymptotic_count(a, orbit, j, low),
-                    )
+                    (a.fall_time(j, low), a.fall_count(orbit, j, low))
                 }
             };
             // The rest of the threshold count, if the threshold was not crossed yet.

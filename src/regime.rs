@@ -1,5 +1,9 @@
 //! Regimes of repeated collisions: docs/physics.md sec. 4 (verified by simulation).
 
+use crate::mechanisms::Dissipation;
+use crate::prediction::{Count, Prediction, Tier, Time};
+use crate::{accuracy, Float, Scene};
+
 /// How a bounce ends (docs/physics.md sec. 4).
 ///
 /// | regime | when | impacts | end |
@@ -75,5 +79,37 @@ impl Regime {
 impl core::fmt::Display for Regime {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         f.write_str(self.name())
+    }
+}
+
+/// A prediction that needs no tier: a single impact, periodic motion, or a gap's bounce that
+/// ends at the first contact (decided exactly: [`crate::exact::ends_at_first_contact`]). Every
+/// tier answers these first.
+pub(crate) fn answer<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Option<Prediction<F>> {
+    by_regime(scene).or_else(|| crate::exact::ends_at_first_contact(scene))
+}
+
+/// A prediction that needs no model: single impact or periodic.
+fn by_regime<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Option<Prediction<F>> {
+    let base = Prediction {
+        regime: scene.regime(),
+        end_time: Time::Never,
+        last_above_time: Time::Never,
+        impacts_above: Count::Infinite,
+        impacts_total: Count::Infinite,
+        tier: Tier::Regime,
+        approximations: accuracy::reduction_flags(scene),
+        expected_error: Some(F::ZERO),
+    };
+    match scene.regime() {
+        Regime::SingleImpact => Some(Prediction {
+            end_time: Time::At(F::ZERO),
+            last_above_time: Time::At(F::ZERO),
+            impacts_above: Count::Finite(F::ONE),
+            impacts_total: Count::Finite(F::ONE),
+            ..base
+        }),
+        Regime::Periodic => Some(base),
+        _ => None,
     }
 }

@@ -39,7 +39,7 @@ pub use kernel::KERNEL_FLIGHT_STEPS;
 
 use crate::accuracy::{self, c};
 use crate::averaged::Averaged;
-use crate::closed::{self, by_regime};
+use crate::closed;
 use crate::mechanisms::Dissipation;
 use crate::prediction::{Approximations, Count, Prediction, Tier, Time};
 use crate::quadrature::{Compensated, Nodes};
@@ -544,7 +544,7 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
     scene: &Scene<F, D>,
     max_impacts: u32,
 ) -> Prediction<F> {
-    if let Some(p) = by_regime(scene).or_else(|| ends_at_first_contact(scene)) {
+    if let Some(p) = crate::regime::answer(scene) {
         return p;
     }
     let dissipation = scene.dissipation();

@@ -17,7 +17,9 @@ pub use viscous::Viscous;
 
 use core::fmt::Debug;
 
+use crate::float::{ln1p_ratio, log_growth_of_ratio};
 use crate::orbit::{Orbit, OrbitPoint};
+use crate::prediction::{Count, Time};
 use crate::Float;
 
 pub(crate) mod sealed {
@@ -60,6 +62,86 @@ impl<F: Float> Asymptote<F> {
     #[must_use]
     pub fn magnitude(&self, impulse: F) -> F {
         self.constant + self.linear * impulse + self.inverse / impulse
+    }
+    /// Time for J to fall from `j1` to `j2` (0 <= j2 <= j1) on the asymptote
+    /// J' = -(constant + linear J + inverse / J) (at most two terms are non-zero).
+    pub(crate) fn fall_time(&self, j1: F, j2: F) -> Time<F> {
+        let a = self;
+        if j1 <= j2 {
+            return Time::At(F::ZERO);
+        }
+        let drop = j1 - j2;
+        if a.inverse > F::ZERO {
+            // integral of J dJ / (B J^2 + C): t_b2r, and t_b2 when B = 0.
+            let squares = drop * (j1 + j2);
+            let base = a.linear * j2 * j2 + a.inverse;
+            Time::At(log_growth_of_ratio(squares, base, a.linear) * F::HALF)
+        } else if a.constant > F::ZERO {
+            // integral of dJ / (A + B J): t_b1v, and t_b1 when B = 0.
+            let base = a.constant + a.linear * j2;
+            Time::At(log_growth_of_ratio(drop, base, a.linear))
+        } else if a.linear > F::ZERO && j2 > F::ZERO {
+            Time::At((j1.ln() - j2.ln()) / a.linear)
+        } else {
+            Time::Never
+        }
+    }
+
+    /// Impacts while J falls from `j1` to `j2` on the asymptote: the integral of dJ / (|E1| T)
+    /// with the small-J period (preload J / (Omega^2 |Delta|), gap 2 pi / Omega, Delta = 0 pi / Omega).
+    pub(crate) fn fall_count(&self, orbit: &Orbit<F>, j1: F, j2: F) -> Count<F> {
+        let a = self;
+        if j1 <= j2 {
+            return Count::Finite(F::ZERO);
+        }
+        let omega = orbit.omega();
+        match offset_class(orbit) {
+            OffsetClass::Preload => {
+                let k = omega * omega * orbit.delta().abs();
+                if j2 <= F::ZERO {
+                    Count::Infinite
+                } else if a.constant > F::ZERO {
+                    // (k/A) ln(j1 (A + B j2) / (j2 (A + B j1))) = (k/A) ln1p(u),
+                    // u = A (j1 - j2) / (j2 (A + B j1)): no cancellation as A -> 0. The ratio
+                    // (j1 - j2) / j2 first, so that j2 (A + B j1) cannot underflow (f32).
+                    let rate = a.constant + a.linear * j1;
+                    let scale = (j1 - j2) / j2 / rate;
+                    let u = a.constant * scale;
+                    if scale.is_finite() && u.is_finite() {
+                        Count::Finite(k * scale * ln1p_ratio(u))
+                    } else {
+                        // The ratio beyond the float's range: u in logarithms (k / A stays near
+                        // 1 / r). u itself may still be small (A tiny: f32, r = 4e-10 and
+                        // v0 = 1e30 gave u = 0.02 and a negative count when ln1p(u) was taken as
+                        // ln u), so ln1p(u) exactly where u is a number, and ln u only beyond.
+                        let ln_u = a.constant.ln() + (j1 - j2).ln() - j2.ln() - rate.ln();
+                        let u = ln_u.exp();
+                        let ln1p_u = if u.is_finite() { u.ln_1p() } else { ln_u };
+                        let n = k / a.constant * ln1p_u;
+                        if n.is_finite() {
+                            Count::Finite(n)
+                        } else {
+                            Count::Infinite
+                        }
+                    }
+                } else if a.linear > F::ZERO {
+                    Count::Finite(k / a.linear * (F::ONE / j2 - F::ONE / j1))
+                } else {
+                    Count::Infinite
+                }
+            }
+            OffsetClass::Gap | OffsetClass::Grazing => {
+                let period = if offset_class(orbit) == OffsetClass::Gap {
+                    F::TWO * F::PI / omega
+                } else {
+                    F::PI / omega
+                };
+                match a.fall_time(j1, j2) {
+                    Time::At(t) => Count::Finite(t / period),
+                    Time::Never => Count::Infinite,
+                }
+            }
+        }
     }
 }
 
