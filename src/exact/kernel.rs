@@ -32,7 +32,9 @@
 //! once q / r times those rates and Omega a / g are below [`Float::TAIL_CUTOFF`]; what is left
 //! out is of their squares' order.
 
-use super::{sin_cos_small, Flights, Landing, GRAZING_EPSILONS, ROOT_STEPS, SERIES_LIMIT};
+use super::{
+    bracketed_root, sin_cos_small, Flights, Landing, GRAZING_EPSILONS, ROOT_STEPS, SERIES_LIMIT,
+};
 use crate::accuracy::c;
 use crate::mechanisms::Dissipation;
 use crate::{Float, Scene};
@@ -346,43 +348,13 @@ impl<F: Float> Flights<F> for Kernel<F> {
             rising = v > F::ZERO;
             low = t;
         };
-        let (mut low, mut high) = bracket;
-        // Newton from the free fall 2a / x''(0) on a short flight, else from the middle.
-        let guess = F::TWO * a / m.x2;
-        let mut t = if guess > low && guess < high {
-            guess
-        } else {
-            low + (high - low) * F::HALF
-        };
-        let mut speed = F::ZERO;
-        let mut steps = 0;
-        while steps < ROOT_STEPS && spent < KERNEL_FLIGHT_STEPS {
-            steps += 1;
-            spent += 1;
-            let (y, v) = self.eval(&m, a, t);
-            speed = v;
-            if y == F::ZERO {
-                break;
-            }
-            if y < F::ZERO {
-                low = t;
-            } else {
-                high = t;
-            }
-            let newton = t - y / v;
-            let next = if v > F::ZERO && newton > low && newton < high {
-                newton
-            } else {
-                low + (high - low) * F::HALF
-            };
-            let settled = (next - t).abs() <= F::TWO * F::EPSILON * t
-                || high - low <= F::TWO * F::EPSILON * high;
-            t = next;
-            if settled {
-                speed = self.eval(&m, a, t).1;
-                break;
-            }
-        }
+        // Newton from the free fall 2a / x''(0) (a short flight's return), else the middle.
+        let (_, speed, t) = bracketed_root(
+            |t| self.eval(&m, a, t),
+            bracket,
+            F::TWO * a / m.x2,
+            ROOT_STEPS.min(KERNEL_FLIGHT_STEPS.saturating_sub(spent)),
+        );
         if speed > F::ZERO {
             self.force = self.closed(&m, t).2;
             Landing::Returns {

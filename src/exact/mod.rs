@@ -341,41 +341,14 @@ impl<F: Float> Oscillator<F> {
         if top < F::ZERO {
             return Landing::Stays { grazing };
         }
-        let (mut low, mut high) = (low, high);
-        // The undamped flight, inside the bracket.
+        // From the undamped flight.
         let guess = F::TWO / self.omega * a.atan2(-self.omega * self.delta);
-        let mut t = if guess > low && guess < high {
-            guess
-        } else {
-            low + (high - low) * F::HALF
-        };
-        let mut speed = F::ZERO;
-        while steps < ROOT_STEPS {
-            steps += 1;
-            let (y, v) = self.eval(a, t);
-            speed = v;
-            if y == F::ZERO {
-                break;
-            }
-            if y < F::ZERO {
-                low = t;
-            } else {
-                high = t;
-            }
-            let newton = t - y / v;
-            let next = if v > F::ZERO && newton > low && newton < high {
-                newton
-            } else {
-                low + (high - low) * F::HALF
-            };
-            let settled = (next - t).abs() <= F::TWO * F::EPSILON * t
-                || high - low <= F::TWO * F::EPSILON * high;
-            t = next;
-            if settled {
-                speed = self.eval(a, t).1;
-                break;
-            }
-        }
+        let (_, speed, t) = bracketed_root(
+            |t| self.eval(a, t),
+            (low, high),
+            guess,
+            ROOT_STEPS.saturating_sub(steps),
+        );
         if speed > F::ZERO {
             Landing::Returns {
                 time: t,
@@ -386,6 +359,53 @@ impl<F: Float> Oscillator<F> {
             Landing::Stays { grazing: true }
         }
     }
+}
+
+/// The return in `bracket` = (low, high), where y(low) < 0 <= y(high) and y rises: Newton
+/// steps from `guess` (the middle if the guess is outside), kept inside the shrinking bracket
+/// by bisection, until a step or the bracket is within 2 epsilon of t, or `steps` evaluations
+/// of `eval` (t -> (y, y')) are spent. Returns (evaluations, y' at the root, the root).
+fn bracketed_root<F: Float>(
+    eval: impl Fn(F) -> (F, F),
+    bracket: (F, F),
+    guess: F,
+    steps: u32,
+) -> (u32, F, F) {
+    let (mut low, mut high) = bracket;
+    let mut t = if guess > low && guess < high {
+        guess
+    } else {
+        low + (high - low) * F::HALF
+    };
+    let mut speed = F::ZERO;
+    let mut spent = 0;
+    while spent < steps {
+        spent += 1;
+        let (y, v) = eval(t);
+        speed = v;
+        if y == F::ZERO {
+            break;
+        }
+        if y < F::ZERO {
+            low = t;
+        } else {
+            high = t;
+        }
+        let newton = t - y / v;
+        let next = if v > F::ZERO && newton > low && newton < high {
+            newton
+        } else {
+            low + (high - low) * F::HALF
+        };
+        let settled =
+            (next - t).abs() <= F::TWO * F::EPSILON * t || high - low <= F::TWO * F::EPSILON * high;
+        t = next;
+        if settled {
+            speed = eval(t).1;
+            break;
+        }
+    }
+    (spent, speed, t)
 }
 
 /// A gap's bounce that ends at the first contact: the first flight (leaving at R v0) does not
