@@ -441,3 +441,57 @@ pub fn kernel_grid() -> Vec<KernelScene> {
     }
     out
 }
+
+/// Kernel scenes off the grid: preloads and gaps, Omega tau log-uniform in 0.05-20, kernel
+/// damping (kappa tau^2 / (2 Omega)) in 0.001-0.05 with the static stiffness kappa tau kept
+/// below 0.8 Omega^2, viscous damping 0 or up to 0.05, R 0.3-0.95, j0 0.1-10 (a gap's at
+/// least 1). `seed` picks them.
+#[must_use]
+pub fn kernel_off_grid(count: usize, seed: u64) -> Vec<KernelScene> {
+    let mut state = seed.max(1);
+    let mut next = move || {
+        state ^= state >> 12;
+        state ^= state << 25;
+        state ^= state >> 27;
+        #[allow(clippy::cast_precision_loss)]
+        let unit = (state.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 / (1u64 << 53) as f64;
+        unit
+    };
+    let log_uniform = |u: f64, lo: f64, hi: f64| (lo.ln() + u * (hi.ln() - lo.ln())).exp();
+    let mut out = Vec::with_capacity(count);
+    while out.len() < count {
+        let omega = 1000.0;
+        let tau = log_uniform(next(), 0.05, 20.0) / omega;
+        let kappa = 2.0 * log_uniform(next(), 1e-3, 0.05) * omega / (tau * tau);
+        let zeta = if next() < 0.5 {
+            0.0
+        } else {
+            log_uniform(next(), 1e-3, 0.05)
+        };
+        let r = 0.3 + 0.65 * next();
+        let gap = next() < 0.5;
+        let j0 = log_uniform(next(), if gap { 1.0 } else { 0.1 }, 10.0);
+        if kappa * tau >= 0.8 * omega * omega {
+            continue;
+        }
+        let delta = if gap { 1e-3 } else { -1e-3 };
+        out.push(KernelScene {
+            name: format!(
+                "kernel off-grid Delta={delta} R={r:.3} Omega tau={:.3} kappa={kappa:.3e} zeta={zeta:.4} j0={j0:.3}",
+                omega * tau
+            ),
+            reference: crate::reference::hereditary::Kernelled {
+                omega,
+                zeta,
+                delta,
+                restitution: r,
+                closing_speed: j0 * omega * 1e-3 / (2.0 * r),
+                kappa,
+                tau,
+                state: None,
+                threshold: None,
+            },
+        });
+    }
+    out
+}

@@ -20,8 +20,8 @@
 //! **Returns.** A flight is scanned in steps of 1/16 of the pair's period: a return is bracketed
 //! where x - Delta turns non-negative, or at a maximum (x' falling through 0) that reaches the
 //! stop, and solved by Newton steps kept inside the bracket. A gap's flight ends without return
-//! once c1+ e^(r1 t) + e^(alpha t) hypot(p, q), a bound on x from then on, is below Delta. All
-//! of it spends at most [`KERNEL_FLIGHT_STEPS`] evaluations per flight; beyond, the return is
+//! once max(c1, 0) e^(r1 t) + e^(alpha t) hypot(p, q), a bound on x from then on, is below Delta.
+//! All of it spends at most [`KERNEL_FLIGHT_STEPS`] evaluations per flight; beyond, the return is
 //! undecided and the prediction gives no expected error.
 //!
 //! **Zeno tail.** Near the stop the body falls back at g = -Omega^2 Delta + u, which drifts at
