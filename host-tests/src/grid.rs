@@ -242,20 +242,24 @@ pub fn compare(scene: &GridScene) -> Result<Vec<Row>, String> {
         .collect())
 }
 
-/// Scenes off the grid (deterministic pseudo-random, between and around the grid's points):
-/// a check that the expected errors were not fitted to the grid alone.
-#[must_use]
-pub fn off_grid(count: usize, seed: u64) -> Vec<GridScene> {
+/// Uniform numbers in [0, 1) from `seed` (xorshift64*): the random scenes' source.
+fn uniform(seed: u64) -> impl FnMut() -> f64 {
     let mut state = seed.max(1);
-    let mut next = move || {
-        // xorshift64*
+    move || {
         state ^= state >> 12;
         state ^= state << 25;
         state ^= state >> 27;
         #[allow(clippy::cast_precision_loss)]
         let unit = (state.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 / (1u64 << 53) as f64;
         unit
-    };
+    }
+}
+
+/// Scenes off the grid (deterministic pseudo-random, between and around the grid's points):
+/// a check that the expected errors were not fitted to the grid alone.
+#[must_use]
+pub fn off_grid(count: usize, seed: u64) -> Vec<GridScene> {
+    let mut next = uniform(seed);
     let log_uniform = |u: f64, lo: f64, hi: f64| (lo.ln() + u * (hi.ln() - lo.ln())).exp();
     let mut out = Vec::with_capacity(count);
     for i in 0..count {
@@ -448,15 +452,7 @@ pub fn kernel_grid() -> Vec<KernelScene> {
 /// least 1). `seed` picks them.
 #[must_use]
 pub fn kernel_off_grid(count: usize, seed: u64) -> Vec<KernelScene> {
-    let mut state = seed.max(1);
-    let mut next = move || {
-        state ^= state >> 12;
-        state ^= state << 25;
-        state ^= state >> 27;
-        #[allow(clippy::cast_precision_loss)]
-        let unit = (state.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 / (1u64 << 53) as f64;
-        unit
-    };
+    let mut next = uniform(seed);
     let log_uniform = |u: f64, lo: f64, hi: f64| (lo.ln() + u * (hi.ln() - lo.ln())).exp();
     let mut out = Vec::with_capacity(count);
     while out.len() < count {

@@ -33,7 +33,8 @@
 //! out is of their squares' order.
 
 use super::{
-    bracketed_root, sin_cos_small, Flights, Landing, GRAZING_EPSILONS, ROOT_STEPS, SERIES_LIMIT,
+    bracketed_root, sin_cos_small, Flights, Landing, TaylorSum, GRAZING_EPSILONS, ROOT_STEPS,
+    SERIES_LIMIT,
 };
 use crate::accuracy::c;
 use crate::mechanisms::Dissipation;
@@ -252,24 +253,14 @@ impl<F: Float> Kernel<F> {
     /// + a0 D(n) / ((n+3)(n+2)(n+1))).
     fn series(&self, m: &Modes<F>, a: F, t: F) -> (F, F) {
         let (mut d0, mut d1, mut d2) = (self.delta, -a, m.x2 * F::HALF);
-        let mut over_t = d1;
-        let mut slope = d1;
-        let mut power = F::ONE;
-        let mut quiet = 0;
-        // d2 is the coefficient of t^2 in x: of t in (x - Delta) / t.
+        let mut sum = TaylorSum::new(d1);
+        // d2 is the coefficient of t^2 in x: of t in (x - Delta) / t. (Three quiet terms to
+        // stop, not two: with three terms in the recurrence one coefficient can nearly vanish
+        // between larger ones.)
         for n in 2..SERIES_TERMS {
             let nf = F::from_u32(n);
-            power *= t;
-            let term = d2 * power;
-            over_t += term;
-            slope += nf * term;
-            if nf * term.abs() <= F::EPSILON * c::<F>(0.01) * (nf * over_t.abs()).max(slope.abs()) {
-                quiet += 1;
-                if quiet >= 3 {
-                    break;
-                }
-            } else {
-                quiet = 0;
+            if sum.add(nf, d2, t, 3) {
+                break;
             }
             // d(n+1) from d(n), d(n-1), d(n-2): k = n - 2 in the recurrence.
             let (n1, n0, nm) = (nf + F::ONE, nf, nf - F::ONE);
@@ -279,7 +270,7 @@ impl<F: Float> Kernel<F> {
             d1 = d2;
             d2 = next;
         }
-        (over_t, slope)
+        (sum.over_t, sum.slope)
     }
 
     /// (x - Delta, x'): the series for short times, the closed form beyond.

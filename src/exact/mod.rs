@@ -100,6 +100,45 @@ fn sin_cos_small<F: Float>(x: F) -> (F, F) {
     (-y.sin_within_pi(), -y.cos_within_pi())
 }
 
+/// The running sums of a flight's Taylor series, y(t) / t = sum c_k t^(k - 1) and
+/// y'(t) = sum k c_k t^(k - 1), fed one coefficient at a time (k >= 2; c_1 starts them).
+#[derive(Debug, Clone, Copy)]
+struct TaylorSum<F> {
+    over_t: F,
+    slope: F,
+    power: F,
+    quiet: u32,
+}
+
+impl<F: Float> TaylorSum<F> {
+    fn new(first: F) -> Self {
+        Self {
+            over_t: first,
+            slope: first,
+            power: F::ONE,
+            quiet: 0,
+        }
+    }
+
+    /// Adds c_k at `t`: true once `settle` terms in a row were below 1 % of an epsilon of the
+    /// sums (the series is summed).
+    #[inline]
+    fn add(&mut self, k: F, coefficient: F, t: F, settle: u32) -> bool {
+        self.power *= t;
+        let term = coefficient * self.power;
+        self.over_t += term;
+        self.slope += k * term;
+        let scale = (k * self.over_t.abs()).max(self.slope.abs());
+        if k * term.abs() <= F::EPSILON * c::<F>(0.01) * scale {
+            self.quiet += 1;
+            self.quiet >= settle
+        } else {
+            self.quiet = 0;
+            false
+        }
+    }
+}
+
 /// The free motion's constants.
 #[derive(Debug, Clone, Copy)]
 enum Damping<F> {
@@ -203,30 +242,18 @@ impl<F: Float> Oscillator<F> {
         let alpha2 = F::TWO * self.zeta * self.omega;
         let w2 = self.omega * self.omega;
         let (mut previous, mut current) = (-a, (alpha2 * a - w2 * self.delta) * F::HALF);
-        let mut over_t = previous;
-        let mut slope = previous;
-        let mut power = F::ONE;
-        let mut quiet = 0;
+        let mut sum = TaylorSum::new(previous);
         let mut kf = F::ONE;
         for reciprocal in RECIPROCALS.iter().skip(2) {
             kf += F::ONE;
-            power *= t;
-            let term = current * power;
-            over_t += term;
-            slope += kf * term;
-            if kf * term.abs() <= F::EPSILON * c::<F>(0.01) * (kf * over_t.abs()).max(slope.abs()) {
-                quiet += 1;
-                if quiet >= 2 {
-                    break;
-                }
-            } else {
-                quiet = 0;
+            if sum.add(kf, current, t, 2) {
+                break;
             }
             let next = -(alpha2 * kf * current + w2 * previous) * F::from_f64(*reciprocal);
             previous = current;
             current = next;
         }
-        (over_t, slope)
+        (sum.over_t, sum.slope)
     }
 
     /// (y(t), y'(t)): the series for short times, the closed form beyond.
