@@ -577,8 +577,10 @@ fn auto_keeps_its_promise_at_ten_one_and_a_tenth_of_a_percent() {
 fn the_exact_tier_solves_kernels_to_1e_9() {
     // Method::Exact with a relaxation kernel (the core's modal flights) against the reference's
     // matrix exponential, on the kernel grid: same count, end within 1e-9. The reference is the
-    // looser of the two here: on the 5,450-impact gap it is 3e-10 from a 40-digit solution,
-    // the tier 2e-13 (see `the_exact_kernel_tier_keeps_its_expected_error_to_40_digits`).
+    // looser of the two here: on the 5,450-impact gap (R = 1, Omega tau = 10, kernel damping
+    // 0.01) it is 3e-10 from the 60-digit solution, the tier 2e-13
+    // (`python3 scripts/kernel_mp.py 1000 0 1e-3 1 3 1e-2 2e5`: 23.34548347425504, a few
+    // minutes; shorter cases run in `the_exact_kernel_tier_keeps_its_expected_error_to_60_digits`).
     use contact_bounce::tiers::Tier;
     use host_tests::grid::kernel_grid;
     use host_tests::reference::hereditary::simulate as simulate_kernel;
