@@ -11,7 +11,8 @@ next impact found by steps of 1/16 of a period and refined by mpmath.findroot. A
 summed once the departure is below 1e-15 Omega |Delta| (what that leaves out is below 1e-28 of
 the bounce).
 
-Usage: kernel_mp.py OMEGA ZETA DELTA R V0 TAU KAPPA   (prints the end time and the count)
+Usage: kernel_mp.py OMEGA ZETA DELTA R V0 TAU KAPPA   (prints the end time and the count;
+KAPPA 0 is the viscous body alone)
 """
 import sys
 
@@ -63,7 +64,8 @@ def solve(omega, zeta, delta, r, v0, tau, kappa):
                            solver='anderson')
         total += root
         speed = v(root)
-        u = mode(root, lambda s: kappa / (s + beta))
+        # (kappa = 0: no kernel, the viscous body alone; u stays 0.)
+        u = mode(root, lambda s: kappa / (s + beta)) if kappa else mp.mpf(0)
         count += 1
 
 

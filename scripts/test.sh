@@ -138,6 +138,7 @@ step "generated tables are current"
 # (the committed files are the generators' output as rustfmt leaves it)
 python3 scripts/gauss_legendre.py | rustfmt --edition 2021 | diff - src/quadrature/table.rs
 python3 scripts/averaged_error_table.py | rustfmt --edition 2021 | diff - src/accuracy/zeno_table.rs
+python3 scripts/flight_series.py | rustfmt --edition 2021 | diff - src/exact/flight_series.rs
 
 step "measured tables are current (docs/ and README regenerate identically)"
 cargo run --quiet --release -p host-tests --bin error-table | diff - docs/error-table.md

@@ -638,6 +638,82 @@ fn the_exact_tier_solves_kernels_to_1e_9() {
     assert!(f32_figures >= 25, "{f32_figures}");
 }
 
+/// The end time and the count (or "inf") of `scripts/kernel_mp.py` (60 digits) for
+/// (Omega, zeta, Delta, R, v0, tau, kappa); kappa 0 is the viscous body alone.
+fn sixty_digits(args: [f64; 7]) -> (f64, String) {
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/../scripts/kernel_mp.py");
+    let out = std::process::Command::new("python3")
+        .arg(script)
+        .args(args.map(|x| format!("{x:e}")))
+        .output()
+        .expect("python3 runs");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    let mut words = text.split_whitespace();
+    let truth: f64 = words.next().unwrap().parse().unwrap();
+    (truth, words.next().unwrap().to_owned())
+}
+
+#[test]
+fn the_exact_viscous_tier_keeps_its_expected_error_to_60_digits() {
+    // Preloads with viscous damping, whose Zeno tails are summed as series in the departure
+    // (`src/exact/tail.rs`): against `scripts/kernel_mp.py` without a kernel. The tactile dome,
+    // heavy damping (zeta 0.5, 0.95), R near 1, and a first departure of 3 Omega |Delta| (the
+    // series reaches only 0.25); f64 within its expected error, f32 within its own.
+    use contact_bounce::{Contact, Frequency, Offset, Restitution, Scene, Threshold, Viscous};
+    // (Omega, zeta, Delta, R, v0)
+    let cases = [
+        (1e4, 0.03, -2e-4, 0.7, 0.5),
+        (1000.0, 0.5, -1e-3, 0.9, 0.5),
+        (1000.0, 0.95, -1e-3, 0.3, 2.0),
+        (1000.0, 0.2, -1e-3, 0.95, 0.05),
+        (1000.0, 0.01, -1e-3, 0.5, 3.0),
+    ];
+    for (omega, zeta, delta, r, v0) in cases {
+        let (truth, count) = sixty_digits([omega, zeta, delta, r, v0, 1e-3, 0.0]);
+        assert_eq!(count, "inf");
+        let contact = Contact {
+            frequency: Frequency::Omega(omega),
+            offset: Offset::Delta(delta),
+            restitution: Restitution::Coefficient(r),
+            closing_speed: v0,
+            threshold: Threshold::None,
+        };
+        let exact = Method::Exact {
+            max_impacts: contact_bounce::tiers::EXACT_MAX_IMPACTS,
+        };
+        let p = Scene::new(contact, Viscous::new(zeta).unwrap())
+            .unwrap()
+            .predict(exact);
+        let error = (p.bounce_time().unwrap() / truth - 1.0).abs();
+        let expected = p.expected_error.expect("a figure");
+        eprintln!("f64 {zeta} {r} {v0}: error {error:e}, expected {expected:e}");
+        assert!(error <= expected, "{p:?} vs {truth}");
+        assert_eq!(p.impacts_total, contact_bounce::tiers::Count::Infinite);
+        // f32: the inputs rounded to f32 move the answer too; both are in its figure.
+        let f32_contact = Contact {
+            frequency: Frequency::Omega(omega as f32),
+            offset: Offset::Delta(delta as f32),
+            restitution: Restitution::Coefficient(r as f32),
+            closing_speed: v0 as f32,
+            threshold: Threshold::None,
+        };
+        let q = Scene::new(f32_contact, Viscous::new(zeta as f32).unwrap())
+            .unwrap()
+            .predict(Method::Exact {
+                max_impacts: contact_bounce::tiers::EXACT_MAX_IMPACTS,
+            });
+        let error = (f64::from(q.bounce_time().unwrap()) / truth - 1.0).abs();
+        let expected = f64::from(q.expected_error.expect("a figure"));
+        eprintln!("f32 {zeta} {r} {v0}: error {error:e}, expected {expected:e}");
+        assert!(error <= expected, "{q:?} vs {truth}");
+    }
+}
+
 #[test]
 fn the_exact_kernel_tier_keeps_its_expected_error_to_60_digits() {
     // Against `scripts/kernel_mp.py` (60-digit modes, steps and roots of its own): the kernel
@@ -646,7 +722,6 @@ fn the_exact_kernel_tier_keeps_its_expected_error_to_60_digits() {
     use contact_bounce::{
         Contact, Frequency, Hereditary, Offset, Restitution, Scene, Threshold, Viscous,
     };
-    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/../scripts/kernel_mp.py");
     // (Omega, zeta, Delta, R, v0, tau, kappa)
     let cases = [
         (1000.0, 0.0, -1e-3, 0.5, 0.3, 1e-4, 6e9),
@@ -655,20 +730,8 @@ fn the_exact_kernel_tier_keeps_its_expected_error_to_60_digits() {
         (1000.0, 0.0, 1e-3, 0.9, 3.0, 1e-2, 4e4),
     ];
     for (omega, zeta, delta, r, v0, tau, kappa) in cases {
-        let out = std::process::Command::new("python3")
-            .arg(script)
-            .args([omega, zeta, delta, r, v0, tau, kappa].map(|x: f64| format!("{x:e}")))
-            .output()
-            .expect("python3 runs");
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        let text = String::from_utf8(out.stdout).unwrap();
-        let mut words = text.split_whitespace();
-        let truth: f64 = words.next().unwrap().parse().unwrap();
-        let count = words.next().unwrap();
+        let (truth, count) = sixty_digits([omega, zeta, delta, r, v0, tau, kappa]);
+        let count = count.as_str();
         let scene = Scene::new(
             Contact {
                 frequency: Frequency::Omega(omega),

@@ -6,20 +6,28 @@
 //! where y rises monotonically, from the first minimum of x to its next maximum; if y is still
 //! negative at that maximum, impacts have ended. The root is found by Newton steps started from
 //! the undamped flight (2 / Omega) atan2(a, -Omega Delta) and kept inside the bracket by
-//! bisection, at most [`ROOT_STEPS`] evaluations. A preload's later flights start instead from
-//! the previous flight, scaled as the undamped flights scale, and take Halley steps (y'' is
-//! given by the equation of motion): two evaluations per flight on the catalogue switches.
+//! bisection, at most [`ROOT_STEPS`] evaluations. A preload's flights start instead from a
+//! guess within a few percent and take Halley steps (y'' is given by the equation of motion):
+//! below a departure of Omega |Delta| / 4, the flight's own power series in the departure
+//! (`flight_series.rs`, within about (2.2 a / (Omega |Delta|))^12 of it, so one evaluation
+//! settles it); above, the previous flight scaled as the undamped flights scale (two
+//! evaluations).
 //!
-//! Short flights (lambda t <= 1.5, lambda the fastest rate of the free motion) are evaluated
+//! Short flights (lambda t <= 0.5, lambda the fastest rate of the free motion) are evaluated
 //! from the Taylor series of y(t) / t about the departure, where the closed form would cancel:
 //! the trivial root at t = 0 is divided out, so the tiny flights of a Zeno accumulation keep
 //! their digits.
 //!
-//! A preload's Zeno tail is summed in closed form once the departure speed a is below
-//! [`Float::TAIL_CUTOFF`] Omega |Delta| and the damping's drift of the ratio of successive
-//! flights, d = 4 zeta a / (3 r Omega |Delta|), is below it too. To first order in a (the
+//! A preload's Zeno tail (zeta <= 1) is summed as a power series in the departure speed
+//! (`tail.rs`: the rest of the bounce S solves S(a) = t(a) + S(R v(a)), t and v the flight
+//! and its return speed as series), once its last two terms say that the truncation is below
+//! an epsilon of the bounce (f64: near 0.03 Omega |Delta|, where the first-order sum below
+//! waits for 6e-6 Omega |Delta|: ln(5000) / ln(1 / R) flights later). Over-damped
+//! (zeta > 1), it is summed to first order once the departure speed a is below
+//! [`Float::TAIL_CUTOFF`] Omega |Delta| and the damping's drift of
+//! the ratio of successive flights, d = 4 zeta a / (3 r Omega |Delta|), is below it too: the
 //! series of one flight gives t = (2a / (Omega^2 |Delta|)) (1 - 2 zeta a / (3 Omega |Delta|))
-//! and a return speed a (1 - 4 zeta a / (3 Omega |Delta|))), the rest lasts
+//! and a return speed a (1 - 4 zeta a / (3 Omega |Delta|)), so the rest lasts
 //! T = 2 a / (r Omega^2 |Delta|) (1 - d / 2); what is left out is of order d^2 and
 //! (a / (Omega |Delta|))^2 of the tail.
 //!
@@ -33,7 +41,9 @@
 //! are solved again from departures off by the accumulated rounding, and the time they move is
 //! part of the expected error (a count that changes withdraws it).
 
+mod flight_series;
 mod kernel;
+mod tail;
 
 pub use kernel::KERNEL_FLIGHT_STEPS;
 
@@ -87,6 +97,9 @@ const ROUNDING_PER_FLIGHT: f64 = 8.0;
 /// A clearance (the top of a flight relative to the stop) within this many epsilons of |Delta|
 /// decides a return by rounding: the count may be off by one.
 const GRAZING_EPSILONS: f64 = 64.0;
+/// Rounding of a tail summed as a series, in epsilons of the tail: its coefficients are found
+/// in about 12 steps that each round, and summed by Horner's rule.
+const TAIL_ROUNDING: f64 = 16.0;
 
 /// (sin x, cos x) for the phases of one flight (0 <= x <= ~3 pi, the bracket's end): reduced by
 /// whole turns and a half turn into [-pi, pi) and summed by [`Float::sin_within_pi`], so the
@@ -419,6 +432,11 @@ fn bracketed_root<F: Float>(
             high = t;
         }
         let newton = t - y / v;
+        if v > F::ZERO && newton == t {
+            // A step below the rounding of t: t is the root (and t is a bound of the
+            // bracket, so the test below would bisect away from it).
+            break;
+        }
         let next = if v > F::ZERO && newton > low && newton < high {
             newton
         } else {
@@ -537,10 +555,10 @@ pub(crate) trait Flights<F> {
     /// The flight that leaves the stop at `departure` (m/s, > 0). On a return the model's
     /// state moves to that impact.
     fn land(&mut self, departure: F) -> Landing<F>;
-    /// The rest of a Zeno accumulation whose next flight leaves at `departure`, summed in
-    /// closed form, with a bound on its error (s): `None` until that form is exact to
-    /// rounding.
-    fn tail(&self, departure: F) -> Option<(F, F)>;
+    /// The rest of a Zeno accumulation whose next flight leaves at `departure`, `elapsed`
+    /// (s) after the first impact, summed in closed form, with a bound on its error (s):
+    /// `None` until that form is exact to the rounding of the whole bounce.
+    fn tail(&self, departure: F, elapsed: F) -> Option<(F, F)>;
 }
 
 /// Viscous damping's flights, with the next guess from the last flight.
@@ -553,18 +571,30 @@ struct Damped<F> {
     loss: F,
     /// The last flight and the undamped flight of its departure.
     previous: Option<(F, F)>,
+    /// A Zeno accumulation's tail as a series (zeta <= 1), else `None`: the first-order sum.
+    series: Option<tail::ZenoTail<F>>,
 }
 
 impl<F: Float> Flights<F> for Damped<F> {
     fn land(&mut self, departure: F) -> Landing<F> {
         let (omega, delta) = (self.oscillator.omega, self.oscillator.delta);
         let undamped = F::TWO / omega * departure.atan2(-omega * delta);
-        let guessed = match self.previous {
-            Some((flight, undamped_before)) if delta < F::ZERO && undamped_before > F::ZERO => self
-                .oscillator
-                .halley(departure, flight * (undamped / undamped_before)),
+        // The first guess: the flight's series where it reaches, else the last flight scaled
+        // as the undamped flights scale.
+        let series = self
+            .series
+            .as_ref()
+            .and_then(|s| s.flight(departure / self.scale))
+            .map(|flight| flight / omega);
+        let scaled = match self.previous {
+            Some((flight, undamped_before)) if delta < F::ZERO && undamped_before > F::ZERO => {
+                Some(flight * (undamped / undamped_before))
+            }
             _ => None,
         };
+        let guessed = series
+            .or(scaled)
+            .and_then(|guess| self.oscillator.halley(departure, guess));
         let landing = guessed.unwrap_or_else(|| self.oscillator.land(departure));
         if let Landing::Returns { time, .. } = landing {
             self.previous = Some((time, undamped));
@@ -572,11 +602,20 @@ impl<F: Float> Flights<F> for Damped<F> {
         landing
     }
 
-    fn tail(&self, departure: F) -> Option<(F, F)> {
+    fn tail(&self, departure: F, elapsed: F) -> Option<(F, F)> {
+        let small = departure / self.scale;
+        if let Some(series) = &self.series {
+            // Taken where the truncation (twice the last two terms) is below an epsilon of
+            // the bounce so far; the sum's own rounding is a few epsilon of the tail.
+            let (sum, last) = series.sum(small)?;
+            let omega = self.oscillator.omega;
+            let (tail, truncation) = (sum / omega, F::TWO * last / omega);
+            return (truncation <= F::EPSILON * (elapsed + tail))
+                .then(|| (tail, truncation + c::<F>(TAIL_ROUNDING) * F::EPSILON * tail));
+        }
         if departure > F::TAIL_CUTOFF * self.scale {
             return None;
         }
-        let small = departure / self.scale;
         let drift = c::<F>(4.0 / 3.0) * self.oscillator.zeta * small / self.loss;
         (drift <= F::TAIL_CUTOFF).then(|| {
             let g = self.oscillator.omega * self.scale;
@@ -604,11 +643,18 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
     if !dissipation.dissipates() || scene.delta() == F::ZERO {
         return closed::predict(scene);
     }
+    let zeta = dissipation.damping_ratio();
+    let series = if scene.regime() == Regime::ZenoAccumulation {
+        tail::ZenoTail::new(zeta, scene.restitution(), scene.loss())
+    } else {
+        None
+    };
     let flights = Damped {
-        oscillator: Oscillator::new(scene.omega(), dissipation.damping_ratio(), scene.delta()),
+        oscillator: Oscillator::new(scene.omega(), zeta, scene.delta()),
         scale: scene.omega() * scene.delta().abs(),
         loss: scene.loss(),
         previous: None,
+        series,
     };
     solve(scene, max_impacts, flights)
 }
@@ -646,7 +692,7 @@ fn solve<F: Float, D: Dissipation<F>, M: Flights<F> + Copy>(
         // R v as v - r v: keeps the loss where R rounds to 1.
         let departure = speed - loss * speed;
         if zeno && !(still_above && threshold.is_some()) {
-            if let Some((tail, error)) = flights.tail(departure) {
+            if let Some((tail, error)) = flights.tail(departure, time.value()) {
                 break Stop::Tail { time: tail, error };
             }
         }

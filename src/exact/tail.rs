@@ -1,0 +1,165 @@
+//! A preload's Zeno tail summed as a power series in the departure speed.
+//!
+//! In units of the stop (Omega = 1, |Delta| = 1), a flight that leaves at speed eps lasts
+//! tau(eps) and returns at rho(eps) (`flight_series.rs`: both as series in eps, each
+//! coefficient a polynomial in zeta); the next flight leaves at phi(eps) = R rho(eps). The rest
+//! of the bounce from a departure eps, S(eps) = sum of tau over eps, phi(eps), phi(phi(eps)),
+//! ..., solves S(eps) = tau(eps) + S(phi(eps)). Written phi(eps) = R eps (1 + p(eps)), the
+//! coefficients of S follow one by one:
+//!
+//! S_k (1 - R^k) = tau_k + sum_{j<k} S_j R^j [eps^(k-j)] (1 + p)^j,
+//!
+//! with 1 - R^k = (1 - R)(1 + R + ... + R^(k-1)), which keeps its digits as R -> 1. The
+//! series converge within the flight series' radius (about 1 for zeta <= 1: 2 atan(eps)'s,
+//! undamped); the sum is taken only at eps <= [`REACH`], and only where its last two terms say
+//! the truncation is below the rounding of the whole bounce (f64: near eps = 0.03, as
+//! 0.03^12 ~ 5e-19). Summed to first order in eps instead, the tail is exact to rounding only
+//! below eps ~ epsilon^(1/3) ~ 6e-6: ln(5000) / ln(1 / R) more flights, 24 at R = 0.7.
+
+use super::flight_series::{FLIGHT_TIME, RETURN_SPEED, TERMS};
+use crate::accuracy::c;
+use crate::Float;
+
+/// The largest departure (in units of Omega |Delta|) the series is summed at.
+const REACH: f64 = 0.25;
+
+/// The tail's coefficients S_k for one scene (in units of the stop).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct ZenoTail<F> {
+    coefficients: [F; TERMS],
+    /// The flight's own series, tau_m(zeta).
+    flight: [F; TERMS],
+}
+
+/// p(zeta) by Horner's rule (`poly` lowest power first).
+fn horner<F: Float>(poly: &[f64], zeta: F) -> F {
+    poly.iter().rev().fold(F::ZERO, |sum, coefficient| {
+        sum * zeta + c::<F>(*coefficient)
+    })
+}
+
+impl<F: Float> ZenoTail<F> {
+    /// The tail of a preload with damping ratio `zeta` (<= 1: beyond it the series' radius
+    /// shrinks as 1 / zeta^2 and its coefficients are ill-conditioned) and restitution R,
+    /// given as R and 1 - R. `None` for zeta > 1.
+    pub(super) fn new(zeta: F, restitution: F, loss: F) -> Option<Self> {
+        if zeta.is_nan() || zeta > F::ONE {
+            return None;
+        }
+        let mut flight = [F::ZERO; TERMS];
+        for (slot, poly) in flight.iter_mut().zip(FLIGHT_TIME.iter()) {
+            *slot = horner(poly, zeta);
+        }
+        // p[m] = rho_(m+1) / rho_1 (rho_1 = 1), p[0] = 1: (1 + p) as a series.
+        let mut p = [F::ZERO; TERMS];
+        for (slot, poly) in p.iter_mut().zip(RETURN_SPEED.iter()) {
+            *slot = horner(poly, zeta);
+        }
+        let mut coefficients = [F::ZERO; TERMS];
+        // sum_{j<k} S_j R^j [eps^(k-j)] (1 + p)^j, gathered as each S_j is found.
+        let mut gathered = [F::ZERO; TERMS];
+        // (1 + p)^k, R^k and 1 + R + ... + R^(k-1).
+        let mut raised = [F::ZERO; TERMS];
+        if let Some(first) = raised.first_mut() {
+            *first = F::ONE;
+        }
+        let (mut r_power, mut geometric) = (F::ONE, F::ZERO);
+        for k in 0..TERMS {
+            geometric = F::ONE + restitution * geometric;
+            r_power *= restitution;
+            let (Some(tau), Some(sum)) = (flight.get(k), gathered.get(k)) else {
+                break;
+            };
+            let coefficient = (*tau + *sum) / (loss * geometric);
+            if let Some(slot) = coefficients.get_mut(k) {
+                *slot = coefficient;
+            }
+            // (1 + p)^(k+1) from (1 + p)^k in place (p[0] = 1), as far as it is still needed.
+            for m in (1..TERMS - k).rev() {
+                let (lower, rest) = raised.split_at_mut(m);
+                if let Some(out) = rest.first_mut() {
+                    *out += lower
+                        .iter()
+                        .zip(p.iter().skip(1).take(m).rev())
+                        .fold(F::ZERO, |s, (a, b)| s + *a * *b);
+                }
+            }
+            let weight = coefficient * r_power;
+            for (later, term) in gathered.iter_mut().skip(k + 1).zip(raised.iter().skip(1)) {
+                *later += weight * *term;
+            }
+        }
+        Some(Self {
+            coefficients,
+            flight,
+        })
+    }
+
+    /// One flight from a departure `eps` (units of Omega |Delta|), in units of 1 / Omega,
+    /// from its series: within about (2.2 eps)^(TERMS + 1) / eps of the flight (tested), a
+    /// guess from which one Halley step lands within rounding below eps ~ 0.1; `None` beyond
+    /// [`REACH`].
+    pub(super) fn flight(&self, eps: F) -> Option<F> {
+        (eps <= c::<F>(REACH)).then(|| {
+            self.flight
+                .iter()
+                .rev()
+                .fold(F::ZERO, |s, coefficient| (s + *coefficient) * eps)
+        })
+    }
+
+    /// The rest of the bounce from a departure `eps` (units of Omega |Delta|) in units of
+    /// 1 / Omega, and the size of its last two terms (a bound on the truncation where the terms
+    /// fall geometrically); `None` beyond [`REACH`].
+    pub(super) fn sum(&self, eps: F) -> Option<(F, F)> {
+        if eps.is_nan() || eps > c::<F>(REACH) {
+            return None;
+        }
+        let total = self
+            .coefficients
+            .iter()
+            .rev()
+            .fold(F::ZERO, |s, coefficient| (s + *coefficient) * eps);
+        let mut last = self.coefficients.iter().rev();
+        let (top, below) = (
+            last.next().copied().unwrap_or(F::ZERO),
+            last.next().copied().unwrap_or(F::ZERO),
+        );
+        let power = (1..TERMS).fold(F::ONE, |power, _| power * eps);
+        Some((total, (top * eps).abs() * power + below.abs() * power))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{Landing, Oscillator};
+    use super::*;
+
+    #[test]
+    fn the_flight_series_is_the_flight_within_its_truncation() {
+        // Against the bracketed root of the closed form (Omega = 1, Delta = -1), zeta from 0
+        // to 1: the terms left out are at most (2.2 eps)^13 / eps of the flight (the
+        // coefficients' polynomials in zeta sum to at most 2.2^m at zeta = 1).
+        for zeta in [0.0_f64, 0.03, 0.3, 0.7, 1.0] {
+            let tail = ZenoTail::new(zeta, 0.7, 0.3);
+            assert!(tail.is_some(), "{zeta} <= 1");
+            let Some(tail) = tail else { return };
+            for eps in [1e-3_f64, 1e-2, 0.05, 0.1, 0.25] {
+                let landing = Oscillator::new(1.0, zeta, -1.0).land(eps);
+                assert!(
+                    matches!(landing, Landing::Returns { .. }),
+                    "a preload returns"
+                );
+                let (Landing::Returns { time, .. }, Some(series)) = (landing, tail.flight(eps))
+                else {
+                    return;
+                };
+                let bound = (2.2 * eps).powi(13) / eps + 4.0 * f64::EPSILON;
+                let error = (series / time - 1.0).abs();
+                assert!(error <= bound, "{zeta} {eps}: {error:e} > {bound:e}");
+            }
+            assert!(tail.flight(0.26).is_none() && tail.sum(0.26).is_none());
+        }
+        assert!(ZenoTail::new(1.01, 0.7, 0.3).is_none());
+    }
+}
