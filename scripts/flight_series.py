@@ -108,8 +108,24 @@ for m in range(1, TERMS + 1):
 assert tau[2] == [0, Fr(-4, 3)] and rho[2] == [0, Fr(-4, 3)]
 
 
-def poly(p):
-    return "&[" + ", ".join(repr(float(c)) for c in p) + "]"
+def packed(series):
+    """Coefficients of eps^1..eps^TERMS, each a polynomial in zeta with only the powers of
+    the parity of m - 1: stored as a polynomial in zeta^2, lowest power first, one after
+    another (m contributes (m + 1) // 2 numbers)."""
+    out = []
+    for m in range(1, TERMS + 1):
+        p = series[m]
+        assert all(c == 0 for i, c in enumerate(p) if i % 2 != (m - 1) % 2), m
+        kept = [p[i] if i < len(p) else Fr(0) for i in range((m - 1) % 2, m, 2)]
+        assert len(kept) == (m + 1) // 2, m
+        out += kept
+    return out
+
+
+def table(name, what, series):
+    values = packed(series)
+    print(f"/// {what}")
+    print(f"pub(crate) const {name}: [f64; PACKED] = [" + ", ".join(repr(float(c)) for c in values) + "];")
 
 
 print("""#![allow(clippy::excessive_precision, clippy::unreadable_literal)]
@@ -118,12 +134,11 @@ print("""#![allow(clippy::excessive_precision, clippy::unreadable_literal)]
 //! 2 atan(eps) undamped and the first order in zeta).
 //!
 //! In units of the stop (Omega = 1, |Delta| = 1), a flight that leaves at speed eps lasts
-//! tau(eps) = sum_m tau_m eps^m and returns at rho(eps) = sum_m rho_m eps^m; entry m - 1 of
-//! each table is the polynomial in the damping ratio zeta of the coefficient of eps^m,
-//! lowest power first.
+//! tau(eps) = sum_m tau_m eps^m and returns at rho(eps) = sum_m rho_m eps^m, m = 1..=TERMS.
+//! Each coefficient is zeta^((m - 1) mod 2) times a polynomial in zeta^2 of (m + 1) / 2
+//! coefficients (integer division), stored lowest power first, m after m.
 """)
-print(f"/// Terms of each series.\npub(super) const TERMS: usize = {TERMS};")
-print("/// tau_m(zeta), m = 1..=TERMS.")
-print("pub(super) const FLIGHT_TIME: [&[f64]; TERMS] = [" + ", ".join(poly(tau[m]) for m in range(1, TERMS + 1)) + "];")
-print("/// rho_m(zeta), m = 1..=TERMS.")
-print("pub(super) const RETURN_SPEED: [&[f64]; TERMS] = [" + ", ".join(poly(rho[m]) for m in range(1, TERMS + 1)) + "];")
+print(f"/// Terms of each series.\npub(crate) const TERMS: usize = {TERMS};")
+print(f"/// Numbers stored per series.\npub(crate) const PACKED: usize = {sum((m + 1) // 2 for m in range(1, TERMS + 1))};")
+table("FLIGHT_TIME", "tau_m(zeta), packed.", tau)
+table("RETURN_SPEED", "rho_m(zeta), packed.", rho)

@@ -85,6 +85,10 @@ pub trait Float:
     fn from_u32(n: u32) -> Self;
     /// The Gauss-Legendre rule of `n` points (n in 2, 4, 6, 8, 10, 12, 16, 20), positive half.
     fn gauss_legendre_half(n: crate::Nodes) -> &'static [(Self, Self)];
+    /// A preloaded flight's duration and return speed as series in the departure speed, in
+    /// this float (the exact tier's Zeno tail; packed as `exact::flight_series` says).
+    #[doc(hidden)]
+    const FLIGHT_SERIES: (&'static [Self], &'static [Self]);
 
     /// |x|.
     fn abs(self) -> Self;
@@ -199,6 +203,25 @@ const fn same<const N: usize>(wide: [(f64, f64); N]) -> [(f64, f64); N] {
     wide
 }
 
+/// A table of f64 constants rounded to f32 at compile time.
+const fn narrow_all<const N: usize>(wide: [f64; N]) -> [f32; N] {
+    let mut out = [0.0f32; N];
+    let mut i = 0;
+    while i < N {
+        // As in `narrow`: rounding to the nearest f32 is the intent, `i < N` bounds the index.
+        #[allow(
+            clippy::cast_possible_truncation,
+            clippy::as_conversions,
+            clippy::indexing_slicing
+        )]
+        {
+            out[i] = wide[i] as f32;
+        }
+        i += 1;
+    }
+    out
+}
+
 macro_rules! select_rule {
     ($n:expr, $ty:ty, $conv:path) => {{
         match $n {
@@ -251,6 +274,10 @@ impl Float for f64 {
     const TAIL_CUTOFF: Self = 6e-6;
     const BACKEND_ERROR: f64 = 0.0;
     const SIN_TERMS: u32 = 10;
+    const FLIGHT_SERIES: (&'static [Self], &'static [Self]) = (
+        &crate::exact::flight_series::FLIGHT_TIME,
+        &crate::exact::flight_series::RETURN_SPEED,
+    );
 
     #[inline]
     fn from_f64(x: f64) -> Self {
@@ -380,6 +407,10 @@ impl Float for f32 {
         0.0
     };
     const SIN_TERMS: u32 = 6;
+    const FLIGHT_SERIES: (&'static [Self], &'static [Self]) = (
+        &narrow_all(crate::exact::flight_series::FLIGHT_TIME),
+        &narrow_all(crate::exact::flight_series::RETURN_SPEED),
+    );
 
     #[inline]
     fn from_f64(x: f64) -> Self {

@@ -41,7 +41,7 @@
 //! are solved again from departures off by the accumulated rounding, and the time they move is
 //! part of the expected error (a count that changes withdraws it).
 
-mod flight_series;
+pub(crate) mod flight_series;
 mod kernel;
 mod tail;
 
@@ -563,7 +563,7 @@ pub(crate) trait Flights<F> {
 
 /// Viscous damping's flights, with the next guess from the last flight.
 #[derive(Debug, Clone, Copy)]
-struct Damped<F> {
+struct Damped<'a, F> {
     oscillator: Oscillator<F>,
     /// Omega |Delta| (m/s).
     scale: F,
@@ -572,10 +572,11 @@ struct Damped<F> {
     /// The last flight and the undamped flight of its departure.
     previous: Option<(F, F)>,
     /// A Zeno accumulation's tail as a series (zeta <= 1), else `None`: the first-order sum.
-    series: Option<tail::ZenoTail<F>>,
+    /// Borrowed: the flights are copied at each impact, the series need not be.
+    series: Option<&'a tail::ZenoTail<F>>,
 }
 
-impl<F: Float> Flights<F> for Damped<F> {
+impl<F: Float> Flights<F> for Damped<'_, F> {
     fn land(&mut self, departure: F) -> Landing<F> {
         let (omega, delta) = (self.oscillator.omega, self.oscillator.delta);
         let undamped = F::TWO / omega * departure.atan2(-omega * delta);
@@ -604,7 +605,7 @@ impl<F: Float> Flights<F> for Damped<F> {
 
     fn tail(&self, departure: F, elapsed: F) -> Option<(F, F)> {
         let small = departure / self.scale;
-        if let Some(series) = &self.series {
+        if let Some(series) = self.series {
             // Taken where the truncation (twice the last two terms) is below an epsilon of
             // the bounce so far; the sum's own rounding is a few epsilon of the tail.
             let (sum, last) = series.sum(small)?;
@@ -644,11 +645,10 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
         return closed::predict(scene);
     }
     let zeta = dissipation.damping_ratio();
-    let series = if scene.regime() == Regime::ZenoAccumulation {
-        tail::ZenoTail::new(zeta, scene.restitution(), scene.loss())
-    } else {
-        None
-    };
+    let mut tail = tail::ZenoTail::EMPTY;
+    let series = (scene.regime() == Regime::ZenoAccumulation
+        && tail.prepare(zeta, scene.restitution(), scene.loss()))
+    .then_some(&tail);
     let flights = Damped {
         oscillator: Oscillator::new(scene.omega(), zeta, scene.delta()),
         scale: scene.omega() * scene.delta().abs(),

@@ -16,7 +16,7 @@
 //! 0.03^12 ~ 5e-19). Summed to first order in eps instead, the tail is exact to rounding only
 //! below eps ~ epsilon^(1/3) ~ 6e-6: ln(5000) / ln(1 / R) more flights, 24 at R = 0.7.
 
-use super::flight_series::{FLIGHT_TIME, RETURN_SPEED, TERMS};
+use super::flight_series::TERMS;
 use crate::accuracy::c;
 use crate::Float;
 
@@ -31,31 +31,44 @@ pub(super) struct ZenoTail<F> {
     flight: [F; TERMS],
 }
 
-/// p(zeta) by Horner's rule (`poly` lowest power first).
-fn horner<F: Float>(poly: &[f64], zeta: F) -> F {
-    poly.iter().rev().fold(F::ZERO, |sum, coefficient| {
-        sum * zeta + c::<F>(*coefficient)
-    })
+/// The coefficients of eps^1..eps^TERMS of a packed series (`flight_series.rs`) at `zeta`,
+/// into `out`.
+fn unpack<F: Float>(packed: &[F], zeta: F, out: &mut [F; TERMS]) {
+    let square = zeta * zeta;
+    let mut rest = packed;
+    for (m, slot) in out.iter_mut().enumerate() {
+        // Term m + 1: m / 2 + 1 numbers, a polynomial in zeta^2, times zeta if m is odd.
+        let (poly, after) = rest.split_at((m / 2 + 1).min(rest.len()));
+        rest = after;
+        let even = poly
+            .iter()
+            .rev()
+            .fold(F::ZERO, |sum, coefficient| sum * square + *coefficient);
+        *slot = if m % 2 == 1 { even * zeta } else { even };
+    }
 }
 
 impl<F: Float> ZenoTail<F> {
+    /// Nothing yet: [`ZenoTail::prepare`] fills it (in place: no 100-byte moves, which would
+    /// link `memcpy` into firmware).
+    pub(super) const EMPTY: Self = Self {
+        coefficients: [F::ZERO; TERMS],
+        flight: [F::ZERO; TERMS],
+    };
+
     /// The tail of a preload with damping ratio `zeta` (<= 1: beyond it the series' radius
     /// shrinks as 1 / zeta^2 and its coefficients are ill-conditioned) and restitution R,
-    /// given as R and 1 - R. `None` for zeta > 1.
-    pub(super) fn new(zeta: F, restitution: F, loss: F) -> Option<Self> {
+    /// given as R and 1 - R. False (and nothing filled) for zeta > 1.
+    pub(super) fn prepare(&mut self, zeta: F, restitution: F, loss: F) -> bool {
         if zeta.is_nan() || zeta > F::ONE {
-            return None;
+            return false;
         }
-        let mut flight = [F::ZERO; TERMS];
-        for (slot, poly) in flight.iter_mut().zip(FLIGHT_TIME.iter()) {
-            *slot = horner(poly, zeta);
-        }
+        let (flight_time, return_speed) = F::FLIGHT_SERIES;
+        unpack(flight_time, zeta, &mut self.flight);
         // p[m] = rho_(m+1) / rho_1 (rho_1 = 1), p[0] = 1: (1 + p) as a series.
         let mut p = [F::ZERO; TERMS];
-        for (slot, poly) in p.iter_mut().zip(RETURN_SPEED.iter()) {
-            *slot = horner(poly, zeta);
-        }
-        let mut coefficients = [F::ZERO; TERMS];
+        unpack(return_speed, zeta, &mut p);
+        let (flight, coefficients) = (&self.flight, &mut self.coefficients);
         // sum_{j<k} S_j R^j [eps^(k-j)] (1 + p)^j, gathered as each S_j is found.
         let mut gathered = [F::ZERO; TERMS];
         // (1 + p)^k, R^k and 1 + R + ... + R^(k-1).
@@ -89,10 +102,7 @@ impl<F: Float> ZenoTail<F> {
                 *later += weight * *term;
             }
         }
-        Some(Self {
-            coefficients,
-            flight,
-        })
+        true
     }
 
     /// One flight from a departure `eps` (units of Omega |Delta|), in units of 1 / Omega,
@@ -141,9 +151,8 @@ mod tests {
         // to 1: the terms left out are at most (2.2 eps)^13 / eps of the flight (the
         // coefficients' polynomials in zeta sum to at most 2.2^m at zeta = 1).
         for zeta in [0.0_f64, 0.03, 0.3, 0.7, 1.0] {
-            let tail = ZenoTail::new(zeta, 0.7, 0.3);
-            assert!(tail.is_some(), "{zeta} <= 1");
-            let Some(tail) = tail else { return };
+            let mut tail = ZenoTail::EMPTY;
+            assert!(tail.prepare(zeta, 0.7, 0.3), "{zeta} <= 1");
             for eps in [1e-3_f64, 1e-2, 0.05, 0.1, 0.25] {
                 let landing = Oscillator::new(1.0, zeta, -1.0).land(eps);
                 assert!(
@@ -160,6 +169,7 @@ mod tests {
             }
             assert!(tail.flight(0.26).is_none() && tail.sum(0.26).is_none());
         }
-        assert!(ZenoTail::new(1.01, 0.7, 0.3).is_none());
+        let mut over = ZenoTail::EMPTY;
+        assert!(!over.prepare(1.01, 0.7, 0.3));
     }
 }
