@@ -581,7 +581,8 @@ impl<F: Float> Flights<F> for Damped<'_, F> {
         let (omega, delta) = (self.oscillator.omega, self.oscillator.delta);
         let undamped = F::TWO / omega * departure.atan2(-omega * delta);
         // The first guess: the flight's series where it reaches, else the last flight scaled
-        // as the undamped flights scale.
+        // as the undamped flights scale, else (a preload's first flight) the undamped flight.
+        // Where the guess is off by more than Halley's window, the bracketed search decides.
         let series = self
             .series
             .as_ref()
@@ -591,6 +592,7 @@ impl<F: Float> Flights<F> for Damped<'_, F> {
             Some((flight, undamped_before)) if delta < F::ZERO && undamped_before > F::ZERO => {
                 Some(flight * (undamped / undamped_before))
             }
+            None if delta < F::ZERO && undamped > F::ZERO => Some(undamped),
             _ => None,
         };
         let guessed = series

@@ -69,37 +69,38 @@ impl<F: Float> ZenoTail<F> {
         let mut p = [F::ZERO; TERMS];
         unpack(return_speed, zeta, &mut p);
         let (flight, coefficients) = (&self.flight, &mut self.coefficients);
-        // sum_{j<k} S_j R^j [eps^(k-j)] (1 + p)^j, gathered as each S_j is found.
+        // 1 / (1 - R^k) as 1 / ((1 - R)(1 + R + ... + R^(k-1))), and R^k, k = 1..=TERMS: off
+        // the chain from one S_k to the next, so that their divisions overlap it.
+        let (mut inverse, mut r_power) = ([F::ZERO; TERMS], [F::ZERO; TERMS]);
+        let (mut power, mut geometric) = (F::ONE, F::ZERO);
+        for (inverse, r_power) in inverse.iter_mut().zip(r_power.iter_mut()) {
+            geometric = F::ONE + restitution * geometric;
+            power *= restitution;
+            *inverse = F::ONE / (loss * geometric);
+            *r_power = power;
+        }
+        // sum_{j<k} S_j R^j [eps^(k-j)] (1 + p)^j, gathered as each S_j is found, and
+        // (1 + p)^j.
         let mut gathered = [F::ZERO; TERMS];
-        // (1 + p)^k, R^k and 1 + R + ... + R^(k-1).
         let mut raised = [F::ZERO; TERMS];
         if let Some(first) = raised.first_mut() {
             *first = F::ONE;
         }
-        let (mut r_power, mut geometric) = (F::ONE, F::ZERO);
+        #[allow(clippy::indexing_slicing)] // k < TERMS, m < TERMS - k, i < m: within the arrays
         for k in 0..TERMS {
-            geometric = F::ONE + restitution * geometric;
-            r_power *= restitution;
-            let (Some(tau), Some(sum)) = (flight.get(k), gathered.get(k)) else {
-                break;
-            };
-            let coefficient = (*tau + *sum) / (loss * geometric);
-            if let Some(slot) = coefficients.get_mut(k) {
-                *slot = coefficient;
-            }
+            let coefficient = (flight[k] + gathered[k]) * inverse[k];
+            coefficients[k] = coefficient;
             // (1 + p)^(k+1) from (1 + p)^k in place (p[0] = 1), as far as it is still needed.
             for m in (1..TERMS - k).rev() {
-                let (lower, rest) = raised.split_at_mut(m);
-                if let Some(out) = rest.first_mut() {
-                    *out += lower
-                        .iter()
-                        .zip(p.iter().skip(1).take(m).rev())
-                        .fold(F::ZERO, |s, (a, b)| s + *a * *b);
+                let mut sum = raised[m];
+                for i in 0..m {
+                    sum += raised[i] * p[m - i];
                 }
+                raised[m] = sum;
             }
-            let weight = coefficient * r_power;
-            for (later, term) in gathered.iter_mut().skip(k + 1).zip(raised.iter().skip(1)) {
-                *later += weight * *term;
+            let weight = coefficient * r_power[k];
+            for m in 1..TERMS - k {
+                gathered[k + m] += weight * raised[m];
             }
         }
         true
