@@ -179,20 +179,21 @@ pub const F32_BACKEND: &str = if cfg!(feature = "micromath") {
     "libm"
 };
 
+/// An `f64` constant rounded to the nearest `f32` (the intent of every narrowing below).
+#[allow(clippy::cast_possible_truncation, clippy::as_conversions)]
+const fn round_to_f32(x: f64) -> f32 {
+    x as f32
+}
+
 /// Converts an `f64` table to `f32` at compile time.
 const fn narrow<const N: usize>(wide: [(f64, f64); N]) -> [(f32, f32); N] {
     let mut out = [(0.0f32, 0.0f32); N];
     let mut i = 0;
     while i < N {
-        // Rounding a 21-digit constant to the nearest f32 is the intent here; `i < N` bounds
-        // the index (const fn: no `get` on arrays in const context).
-        #[allow(
-            clippy::cast_possible_truncation,
-            clippy::as_conversions,
-            clippy::indexing_slicing
-        )]
+        // `i < N` bounds the index (const fn: no `get` on arrays in const context).
+        #[allow(clippy::indexing_slicing)]
         {
-            out[i] = (wide[i].0 as f32, wide[i].1 as f32);
+            out[i] = (round_to_f32(wide[i].0), round_to_f32(wide[i].1));
         }
         i += 1;
     }
@@ -208,14 +209,9 @@ const fn narrow_all<const N: usize>(wide: [f64; N]) -> [f32; N] {
     let mut out = [0.0f32; N];
     let mut i = 0;
     while i < N {
-        // As in `narrow`: rounding to the nearest f32 is the intent, `i < N` bounds the index.
-        #[allow(
-            clippy::cast_possible_truncation,
-            clippy::as_conversions,
-            clippy::indexing_slicing
-        )]
+        #[allow(clippy::indexing_slicing)] // i < N
         {
-            out[i] = wide[i] as f32;
+            out[i] = round_to_f32(wide[i]);
         }
         i += 1;
     }
