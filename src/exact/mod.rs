@@ -585,7 +585,6 @@ impl<F: Float> Flights<F> for Damped<'_, F> {
         // Where the guess is off by more than Halley's window, the bracketed search decides.
         let series = self
             .series
-            .as_ref()
             .and_then(|s| s.flight(departure / self.scale))
             .map(|flight| flight / omega);
         let scaled = match self.previous {
@@ -613,7 +612,7 @@ impl<F: Float> Flights<F> for Damped<'_, F> {
             let (sum, last) = series.sum(small)?;
             let omega = self.oscillator.omega;
             let (tail, truncation) = (sum / omega, F::TWO * last / omega);
-            return (truncation <= F::EPSILON * (elapsed + tail))
+            return (tail.is_finite() && truncation <= F::EPSILON * (elapsed + tail))
                 .then(|| (tail, truncation + c::<F>(TAIL_ROUNDING) * F::EPSILON * tail));
         }
         if departure > F::TAIL_CUTOFF * self.scale {

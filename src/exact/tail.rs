@@ -58,7 +58,8 @@ impl<F: Float> ZenoTail<F> {
 
     /// The tail of a preload with damping ratio `zeta` (<= 1: beyond it the series' radius
     /// shrinks as 1 / zeta^2 and its coefficients are ill-conditioned) and restitution R,
-    /// given as R and 1 - R. False (and nothing filled) for zeta > 1.
+    /// given as R and 1 - R. False for zeta > 1, or where a coefficient overflows (then its
+    /// contents are not to be used).
     pub(super) fn prepare(&mut self, zeta: F, restitution: F, loss: F) -> bool {
         if zeta.is_nan() || zeta > F::ONE {
             return false;
@@ -103,7 +104,10 @@ impl<F: Float> ZenoTail<F> {
                 gathered[k + m] += weight * raised[m];
             }
         }
-        true
+        // S_k grows like 1 / (1 - R)^k: with R within a few epsilon of 1 (or a loss given
+        // below the float's range to the 12th power) it overflows, and the tail is left to
+        // the first-order sum.
+        self.coefficients.iter().all(|s| s.is_finite())
     }
 
     /// One flight from a departure `eps` (units of Omega |Delta|), in units of 1 / Omega,
@@ -172,5 +176,10 @@ mod tests {
         }
         let mut over = ZenoTail::EMPTY;
         assert!(!over.prepare(1.01, 0.7, 0.3));
+        // A loss whose 12th power is below the float's range: refused, not summed to inf.
+        assert!(!over.prepare(0.03, 1.0 - 1e-30, 1e-30));
+        let mut narrow = ZenoTail::<f32>::EMPTY;
+        assert!(!narrow.prepare(0.03, 1.0, 6e-8));
+        assert!(narrow.prepare(0.03, 0.9, 0.1));
     }
 }
