@@ -2,21 +2,13 @@
 // only (formatting floats would pull ~30 KB of core::fmt into the firmware).
 
 use contact_bounce::{
-    catalogue, tiers::DEFAULT_MAX_IMPACTS, window::window_ticks, Float, Margin, Method, Nodes,
-    Tolerance, Window,
+    catalogue, tiers::DEFAULT_MAX_IMPACTS, Float, Margin, Method, Nodes, Tolerance, Window,
 };
 use core::fmt::Write;
 
-/// The tactile dome's window at compile time: t_b1 widened by its worst atan error (8 % at
-/// j0 <= 1, x/atan(x) - 1 with x = j0/2 = 0.175: 1 %) and 50 %, in 10 us ticks.
-const DOME_TICKS: u32 =
-    match contact_bounce::window::preload_bounce_time(5e-5, 5000.0, 1.0, 0.5, 0.7) {
-        Ok(t) => match window_ticks(t.seconds, 1.5, 10e-6) {
-            Ok(ticks) => ticks,
-            Err(_) => panic!("window does not fit"),
-        },
-        Err(_) => panic!("bad switch parameters"),
-    };
+#[path = "dome_window.rs"]
+mod dome_window;
+use dome_window::DOME_TICKS;
 
 pub fn run(out: &mut impl Write) -> core::fmt::Result {
     let switches = [

@@ -4,19 +4,12 @@
 // (three tiers) needs more AVR flash than the Uno's 32 KB (`uno_cost_closed_map` in
 // docs/cost-report.md).
 
-use contact_bounce::{
-    catalogue, tiers::MapImpacts, tiers::DEFAULT_MAX_IMPACTS, window::window_ticks, Float,
-};
+use contact_bounce::{catalogue, tiers::MapImpacts, tiers::DEFAULT_MAX_IMPACTS, Float};
 use core::fmt::Write;
 
-const DOME_TICKS: u32 =
-    match contact_bounce::window::preload_bounce_time(5e-5, 5000.0, 1.0, 0.5, 0.7) {
-        Ok(t) => match window_ticks(t.seconds, 1.5, 10e-6) {
-            Ok(ticks) => ticks,
-            Err(_) => panic!("window does not fit"),
-        },
-        Err(_) => panic!("bad switch parameters"),
-    };
+#[path = "dome_window.rs"]
+mod dome_window;
+use dome_window::DOME_TICKS;
 
 pub fn run(out: &mut impl Write) -> core::fmt::Result {
     for switch in [catalogue::TACTILE_DOME, catalogue::SIGNAL_RELAY] {
