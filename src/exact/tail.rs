@@ -23,8 +23,9 @@ use crate::Float;
 /// The largest departure (in units of Omega |Delta|) the series is summed at.
 const REACH: f64 = 0.25;
 
-/// The tail's coefficients S_k for one scene (in units of the stop).
-#[derive(Debug, Clone, Copy)]
+/// The tail's coefficients S_k for one scene (in units of the stop). Not `Copy`: it is
+/// prepared in place and borrowed (a copy per impact would link `memcpy` into firmware).
+#[derive(Debug)]
 pub(super) struct ZenoTail<F> {
     coefficients: [F; TERMS],
     /// The flight's own series, tau_m(zeta).
