@@ -97,42 +97,24 @@ struct Modes<F> {
 }
 
 /// The real root's distance d = r1 + beta in (0, beta), the root of
-/// d ((d - beta)(d - beta + 2 zeta Omega) + Omega^2) = kappa, by Newton steps kept inside the bracket (the left side is -kappa at 0
-/// and beta Omega^2 - kappa > 0 at beta). `None` if it does not settle in 200 steps.
+/// d ((d - beta)(d - beta + 2 zeta Omega) + Omega^2) = kappa, by the flights' guarded Newton
+/// ([`super::bracketed_root`]: the left side is -kappa at 0 and beta Omega^2 - kappa > 0 at
+/// beta). `None` if it does not settle in 200 evaluations.
 fn real_root<F: Float>(omega2: F, damping: F, kappa: F, beta: F) -> Option<F> {
+    const STEPS: u32 = 200;
     let quadratic = |d: F| (d - beta) * (d - beta + damping) + omega2;
-    let (mut low, mut high) = (F::ZERO, beta);
-    let start = kappa / quadratic(F::ZERO);
-    let mut d = if start > low && start < high {
-        start
-    } else {
-        beta * F::HALF
-    };
-    for _ in 0..200 {
-        let f = d * quadratic(d) - kappa;
-        if f == F::ZERO {
-            return Some(d);
-        }
-        if f < F::ZERO {
-            low = d;
-        } else {
-            high = d;
-        }
-        let slope = quadratic(d) + d * (F::TWO * (d - beta) + damping);
-        let newton = d - f / slope;
-        let next = if newton > low && newton < high {
-            newton
-        } else {
-            low + (high - low) * F::HALF
-        };
-        let settled =
-            (next - d).abs() <= F::TWO * F::EPSILON * d || high - low <= F::TWO * F::EPSILON * high;
-        d = next;
-        if settled {
-            return Some(d);
-        }
-    }
-    None
+    let (spent, _, d) = super::bracketed_root(
+        |d| {
+            (
+                d * quadratic(d) - kappa,
+                quadratic(d) + d * (F::TWO * (d - beta) + damping),
+            )
+        },
+        (F::ZERO, beta),
+        kappa / quadratic(F::ZERO),
+        STEPS,
+    );
+    (spent < STEPS).then_some(d)
 }
 
 impl<F: Float> Kernel<F> {
