@@ -15,8 +15,7 @@ mod firmware;
 #[cfg(any(target_os = "none", target_arch = "avr"))]
 fn work() {
     firmware::measure(|scene| {
-        let contact =
-            core::hint::black_box(contact_bounce::catalogue::TACTILE_DOME).contact::<f32>();
+        let contact = core::hint::black_box(firmware::DOME).contact();
         let _ = scene;
         contact_bounce::Scene::new(contact, contact_bounce::Undamped).map_or(u32::MAX, |s| {
             firmware::window(

@@ -14,29 +14,25 @@ mod firmware;
 
 #[cfg(any(target_os = "none", target_arch = "avr"))]
 fn work() {
-    // The dome's values as f32 constants (as firmware would write them), hidden from the
-    // optimiser: no f64 catalogue and no conversion in the firmware.
-    const D: contact_bounce::catalogue::Typical = contact_bounce::catalogue::TACTILE_DOME;
-    #[allow(clippy::cast_possible_truncation)]
-    const INPUTS: [f32; 6] = [
-        D.mass as f32,
-        D.stiffness as f32,
-        D.preload_force as f32,
-        D.closing_speed as f32,
-        D.restitution as f32,
-        D.damping_ratio as f32,
-    ];
     firmware::measure_without_scene(|| {
-        let [m, k, f, v, r, z] = core::hint::black_box(INPUTS);
-        contact_bounce::tiers::preload_viscous_bounce_time(m, k, f, v, r, z)
-            .and_then(|e| {
-                contact_bounce::Window::from_seconds(
-                    e.time,
-                    &contact_bounce::Margin::none(),
-                    core::hint::black_box(1e-5),
-                )
-            })
-            .map_or(0, |w| w.ticks())
+        // The dome as f32 constants, hidden from the optimiser.
+        let d = core::hint::black_box(firmware::DOME);
+        contact_bounce::tiers::preload_viscous_bounce_time(
+            d.mass,
+            d.stiffness,
+            d.preload_force,
+            d.closing_speed,
+            d.restitution,
+            d.damping_ratio,
+        )
+        .and_then(|e| {
+            contact_bounce::Window::from_seconds(
+                e.time,
+                &contact_bounce::Margin::none(),
+                core::hint::black_box(1e-5),
+            )
+        })
+        .map_or(0, |w| w.ticks())
     });
 }
 

@@ -222,7 +222,8 @@ marks_qemu() { # elf target -> one count per interval between marks
   echo
   echo "## One firmware per tier"
   echo
-  echo "\`examples/tier_*.rs\`: the tactile dome in f32, one tier named as a constant (so it alone is"
+  echo "\`examples/tier_*.rs\`: the tactile dome written as f32 constants (as firmware writes its switch:"
+  echo "no f64 catalogue converted at run time), hidden from the optimiser, one tier named as a constant (so it alone is"
   echo "linked), its window at 10 us samples stored to a volatile. Crate bytes: the firmware's text minus"
   echo "\`tier_empty\`'s, the same skeleton with no crate code (thumbv6m: EMPTY6, thumbv7em: EMPTY7, Uno: EMPTYU"
   echo "bytes). The count is the call of the tier and its window (scene validation apart): instructions"
