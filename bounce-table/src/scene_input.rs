@@ -99,10 +99,188 @@ const KEYS: [&str; 13] = [
     "two_body",
 ];
 
-fn number(object: &Map<String, Value>, key: &str, prefix: &str) -> Result<Option<f64>, FieldError> {
-    match object.get(key) {
-        None | Some(Value::Null) => Ok(None),
-        Some(Value::Number(n)) => n.as_f64().map(Some).ok_or_else(|| {
+/// A value of a scene object, as the reading of a scene sees it.
+pub(crate) enum Item<'a, O: ?Sized> {
+    /// `null`.
+    Null,
+    /// A number (`None`: not representable as an `f64`).
+    Number(Option<f64>),
+    /// A string.
+    Str(&'a str),
+    /// A nested object.
+    Object(&'a O),
+    /// Anything else (an array, a boolean).
+    Other,
+}
+
+/// A scene object: a JSON object, or a [`FlatScene`] read straight from a line.
+pub(crate) trait Object {
+    /// The value of `key`, if given.
+    fn item(&self, key: &str) -> Option<Item<'_, Self>>;
+    /// The first key not in `allowed`.
+    fn key_outside(&self, allowed: &[&str]) -> Option<&str>;
+}
+
+impl Object for Map<String, Value> {
+    fn item(&self, key: &str) -> Option<Item<'_, Self>> {
+        self.get(key).map(|v| match v {
+            Value::Null => Item::Null,
+            Value::Number(n) => Item::Number(n.as_f64()),
+            Value::String(s) => Item::Str(s),
+            Value::Object(o) => Item::Object(o),
+            Value::Array(_) | Value::Bool(_) => Item::Other,
+        })
+    }
+    fn key_outside(&self, allowed: &[&str]) -> Option<&str> {
+        self.keys()
+            .map(String::as_str)
+            .find(|k| !allowed.contains(k))
+    }
+}
+
+/// The keys a scene line gives plain numbers under, at its top level.
+const FLAT: [&str; 10] = [
+    "omega",
+    "mass",
+    "stiffness",
+    "gap",
+    "preload_force",
+    "restitution",
+    "damping_ratio",
+    "closing_speed",
+    "threshold_impulse",
+    "threshold_fraction",
+];
+
+/// A scene line whose values are all plain (a number or null under a key of [`FLAT`], a
+/// string or null under `name`), read straight from its text into fixed slots: no JSON tree,
+/// no map, no string but the name. [`FlatScene::read`] gives `None` for any other line (a
+/// range, a nested object, an unknown or repeated key, a literal that underflows, text that is
+/// not JSON): the full reading ([`crate::strict::json`], [`SceneInput::from_json`]) takes
+/// those, and says what is wrong. A line both read is the same scene.
+#[derive(Debug, Default)]
+pub(crate) struct FlatScene {
+    /// `name`: `Some(None)` where given as null.
+    name: Option<Option<String>>,
+    /// The values of [`FLAT`]'s keys, in its order, likewise.
+    numbers: [Option<Option<f64>>; FLAT.len()],
+}
+
+/// A key of a flat line: 0 for `name`, else 1 + its place in [`FLAT`].
+struct FlatKey(usize);
+
+impl<'de> serde::Deserialize<'de> for FlatKey {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct KeyVisitor;
+        impl serde::de::Visitor<'_> for KeyVisitor {
+            type Value = FlatKey;
+            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.write_str("a top-level scene key with a plain value")
+            }
+            fn visit_str<E: serde::de::Error>(self, key: &str) -> Result<FlatKey, E> {
+                if key == "name" {
+                    return Ok(FlatKey(0));
+                }
+                FLAT.iter()
+                    .position(|k| *k == key)
+                    .map(|i| FlatKey(i + 1))
+                    .ok_or_else(|| E::custom("not a flat key"))
+            }
+        }
+        d.deserialize_identifier(KeyVisitor)
+    }
+}
+
+impl<'de> serde::Deserialize<'de> for FlatScene {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct LineVisitor;
+        impl<'de> serde::de::Visitor<'de> for LineVisitor {
+            type Value = FlatScene;
+            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.write_str("a scene object with plain values")
+            }
+            fn visit_map<A: serde::de::MapAccess<'de>>(
+                self,
+                mut map: A,
+            ) -> Result<FlatScene, A::Error> {
+                use serde::de::Error;
+                let mut scene = FlatScene::default();
+                while let Some(FlatKey(k)) = map.next_key()? {
+                    let repeated = || A::Error::custom("a key given twice");
+                    if k == 0 {
+                        if scene.name.is_some() {
+                            return Err(repeated());
+                        }
+                        scene.name = Some(map.next_value()?);
+                    } else {
+                        let slot = scene
+                            .numbers
+                            .get_mut(k - 1)
+                            .ok_or_else(|| A::Error::custom("no such key"))?;
+                        if slot.is_some() {
+                            return Err(repeated());
+                        }
+                        *slot = Some(map.next_value()?);
+                    }
+                }
+                Ok(scene)
+            }
+        }
+        d.deserialize_map(LineVisitor)
+    }
+}
+
+impl FlatScene {
+    /// The line read flat, or `None` where it needs the full reading (see [`FlatScene`]).
+    pub(crate) fn read(text: &str) -> Option<Self> {
+        let mut d = serde_json::Deserializer::from_str(text);
+        let scene = <Self as serde::Deserialize>::deserialize(&mut d).ok()?;
+        d.end().ok()?;
+        // A literal that is not zero but reads as 0 (`1e-400`) must be refused, as the full
+        // reading does: only a value read as 0 can be one, so a line with a 0 takes the full
+        // reading (no scan of every line's text for such literals).
+        let zero = scene
+            .numbers
+            .iter()
+            .any(|n| n.flatten().is_some_and(|x| x == 0.0));
+        (!zero).then_some(scene)
+    }
+
+    /// Its name, if given as a string.
+    pub(crate) fn name(&self) -> Option<&str> {
+        self.name.as_ref().and_then(Option::as_deref)
+    }
+}
+
+impl Object for FlatScene {
+    fn item(&self, key: &str) -> Option<Item<'_, Self>> {
+        if key == "name" {
+            return self
+                .name
+                .as_ref()
+                .map(|n| n.as_deref().map_or(Item::Null, Item::Str));
+        }
+        let i = FLAT.iter().position(|k| *k == key)?;
+        self.numbers
+            .get(i)
+            .copied()
+            .flatten()
+            .map(|n| n.map_or(Item::Null, |x| Item::Number(Some(x))))
+    }
+    fn key_outside(&self, _allowed: &[&str]) -> Option<&str> {
+        // Only `name` and the keys of `FLAT` are read, and every scene object takes those.
+        None
+    }
+}
+
+fn number<O: Object + ?Sized>(
+    object: &O,
+    key: &str,
+    prefix: &str,
+) -> Result<Option<f64>, FieldError> {
+    match object.item(key) {
+        None | Some(Item::Null) => Ok(None),
+        Some(Item::Number(n)) => n.map(Some).ok_or_else(|| {
             FieldError::new(&format!("{prefix}{key}"), "is not a representable number")
         }),
         Some(_) => Err(FieldError::new(
@@ -112,17 +290,17 @@ fn number(object: &Map<String, Value>, key: &str, prefix: &str) -> Result<Option
     }
 }
 
-fn required(object: &Map<String, Value>, key: &str, prefix: &str) -> Result<f64, FieldError> {
+fn required<O: Object + ?Sized>(object: &O, key: &str, prefix: &str) -> Result<f64, FieldError> {
     number(object, key, prefix)?
         .ok_or_else(|| FieldError::new(&format!("{prefix}{key}"), "is required"))
 }
 
-fn only_keys(
-    object: &Map<String, Value>,
+fn only_keys<O: Object + ?Sized>(
+    object: &O,
     allowed: &[&str],
     prefix: &str,
 ) -> Result<(), FieldError> {
-    match object.keys().find(|k| !allowed.contains(&k.as_str())) {
+    match object.key_outside(allowed) {
         Some(k) => Err(FieldError::new(
             &format!("{prefix}{k}"),
             format!(
@@ -147,22 +325,34 @@ impl SceneInput {
         let object = value
             .as_object()
             .ok_or_else(|| FieldError::new("", "a scene must be a JSON object"))?;
+        Self::from_object(object, default_name)
+    }
+
+    /// Reads a scene from a scene object (a JSON object, or a line read flat).
+    ///
+    /// # Errors
+    /// As [`SceneInput::from_json`].
+    pub(crate) fn from_object<O: Object + ?Sized>(
+        object: &O,
+        default_name: &str,
+    ) -> Result<Self, FieldError> {
         only_keys(object, &KEYS, "")?;
-        let name = match object.get("name") {
-            None | Some(Value::Null) => default_name.to_owned(),
-            Some(Value::String(s)) => s.clone(),
+        let name = match object.item("name") {
+            None | Some(Item::Null) => default_name.to_owned(),
+            Some(Item::Str(s)) => s.to_owned(),
             Some(_) => return Err(FieldError::new("name", "must be a string")),
         };
-        let has = |k: &str| object.get(k).is_some_and(|v| !v.is_null());
-        let spring = if let Some(two) = object.get("two_body").filter(|v| !v.is_null()) {
+        let has = |k: &str| object.item(k).is_some_and(|v| !matches!(v, Item::Null));
+        let spring = if let Some(two) = object.item("two_body").filter(|v| !matches!(v, Item::Null))
+        {
             for k in ["omega", "mass", "stiffness", "damping_ratio"] {
                 if has(k) {
                     return Err(conflict("two_body", k));
                 }
             }
-            let body = two
-                .as_object()
-                .ok_or_else(|| FieldError::new("two_body", "must be an object"))?;
+            let Item::Object(body) = two else {
+                return Err(FieldError::new("two_body", "must be an object"));
+            };
             only_keys(
                 body,
                 &["m1", "c1", "d1", "m2", "c2", "d2", "x2", "v2"],
@@ -217,12 +407,12 @@ impl SceneInput {
             (None, Some(f)) => Threshold::FractionOfFirst(f),
             (None, None) => Threshold::None,
         };
-        let kernel = match object.get("kernel").filter(|v| !v.is_null()) {
+        let kernel = match object.item("kernel").filter(|v| !matches!(v, Item::Null)) {
             None => None,
             Some(k) => {
-                let k = k
-                    .as_object()
-                    .ok_or_else(|| FieldError::new("kernel", "must be an object"))?;
+                let Item::Object(k) = k else {
+                    return Err(FieldError::new("kernel", "must be an object"));
+                };
                 only_keys(k, &["kappa", "tau", "state"], "kernel.")?;
                 Some(Kernel {
                     kappa: required(k, "kappa", "kernel.")?,

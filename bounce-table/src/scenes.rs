@@ -3,11 +3,11 @@
 
 use serde_json::{json, Value};
 
-use crate::scene_input::FieldError;
+use crate::scene_input::{FieldError, FlatScene};
 use crate::spreads::Template;
 
 /// One switch to analyse.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Entry {
     /// Its name (or "entry N").
     pub name: String,
@@ -99,6 +99,17 @@ fn entry_of(file: &str, index: usize, scene: Value) -> Result<Entry, FileError> 
     }
 }
 
+/// A JSON Lines entry read flat ([`FlatScene`]), named as [`entry_of`] names it; `None` where
+/// the line needs the full reading, or has a fault (which the full reading names).
+fn flat_entry(line: &str, index: usize) -> Option<Entry> {
+    let flat = FlatScene::read(line)?;
+    let name = flat
+        .name()
+        .map_or_else(|| format!("entry {}", index + 1), str::to_owned);
+    let template = Template::from_flat(&flat, &name).ok()?;
+    Some(Entry { name, template })
+}
+
 /// Whether an entry's nominal scene makes a scene (the fault of an entry that parsed).
 ///
 /// # Errors
@@ -150,16 +161,25 @@ impl Raw {
         match &self.item {
             Item::Ready(e) => Ok(e.clone()),
             Item::Value(v) => entry_of(&self.file, self.index, v.clone()),
-            Item::Line(l, number) => match crate::strict::json(l) {
-                Ok(v) => entry_of(&self.file, self.index, v),
-                Err((_, message)) => Err(FileError {
-                    file: self.file.to_string(),
-                    place: format!("line {number}"),
-                    field: String::new(),
-                    message,
-                }),
+            Item::Line(l, number) => match flat_entry(l, self.index) {
+                Some(entry) => Ok(entry),
+                None => self.line_entry(l, *number),
             },
             Item::Fault(e) => Err(e.clone()),
+        }
+    }
+
+    /// A line read in full (a JSON value, then a scene): what a line not read flat takes,
+    /// and what names a line's fault.
+    fn line_entry(&self, l: &str, number: usize) -> Result<Entry, FileError> {
+        match crate::strict::json(l) {
+            Ok(v) => entry_of(&self.file, self.index, v),
+            Err((_, message)) => Err(FileError {
+                file: self.file.to_string(),
+                place: format!("line {number}"),
+                field: String::new(),
+                message,
+            }),
         }
     }
 
@@ -362,4 +382,58 @@ pub fn open(path: &str) -> Result<Entries, Vec<FileError>> {
         source: Source::Document(scenes.into_iter()),
         index: 0,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn full(line: &str, index: usize) -> Result<Entry, FileError> {
+        let value = crate::strict::json(line).map_err(|(_, message)| FileError {
+            file: "t".to_owned(),
+            place: String::new(),
+            field: String::new(),
+            message,
+        })?;
+        entry_of("t", index, value)
+    }
+
+    #[test]
+    fn a_line_read_flat_is_the_scene_the_full_reading_gives() {
+        let lines = [
+            r#"{"name": "dome", "mass": 5e-05, "stiffness": 5000, "preload_force": 1.0, "restitution": 0.7, "damping_ratio": 0.03, "closing_speed": 0.5}"#,
+            r#"{"omega": 1e4, "gap": -1e-6, "restitution": 0.5, "closing_speed": 18446744073709551615, "threshold_impulse": 1e-9}"#,
+            r#"{"name": null, "omega": 1e4, "gap": 2e-6, "restitution": 1, "closing_speed": 0.1, "threshold_fraction": 0.01}"#,
+            r#"{"name": "a\nb \u00e9", "m\u0061ss": 1, "stiffness": 2, "preload_force": 3, "restitution": 0.5, "closing_speed": -0.5, "damping_ratio": null}"#,
+        ];
+        for (i, line) in lines.iter().enumerate() {
+            let flat = flat_entry(line, i).expect("read flat");
+            assert_eq!(Ok(flat), full(line, i), "{line}");
+        }
+    }
+
+    #[test]
+    fn a_line_the_flat_reading_cannot_vouch_for_takes_the_full_reading() {
+        let base = r#""omega": 1e4, "gap": -1e-6, "restitution": 0.5, "closing_speed": 1"#;
+        for line in [
+            // Faults the full reading names: a key twice, a literal that underflows, one
+            // that overflows, a string for a number, a name that is not a string, an unknown
+            // key, a missing or conflicting field, not JSON.
+            format!(r#"{{{base}, "gap": -2e-6}}"#),
+            format!(r#"{{{base}, "damping_ratio": 1e-400}}"#),
+            format!(r#"{{{base}, "damping_ratio": 1e400}}"#),
+            format!(r#"{{{base}, "damping_ratio": "0.1"}}"#),
+            format!(r#"{{{base}, "name": 7}}"#),
+            format!(r#"{{{base}, "colour": 1}}"#),
+            r#"{"omega": 1e4, "restitution": 0.5, "closing_speed": 1}"#.to_owned(),
+            format!(r#"{{{base}, "preload_force": 1}}"#),
+            format!(r#"{{{base}}} x"#),
+            // Readings it leaves to the full one: a range, a kernel, a value read as 0.
+            format!(r#"{{{base}, "damping_ratio": {{"min": 0.01, "max": 0.02}}}}"#),
+            format!(r#"{{{base}, "kernel": {{"kappa": 1, "tau": 1}}}}"#),
+            format!(r#"{{{base}, "damping_ratio": 0}}"#),
+        ] {
+            assert!(flat_entry(&line, 0).is_none(), "{line}");
+        }
+    }
 }

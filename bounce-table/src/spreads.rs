@@ -52,7 +52,7 @@ impl Dist {
 
 /// A scene with distributions, parsed once: the Monte Carlo varies its typed parameters, never
 /// JSON.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Template {
     /// The scene, distributions replaced by their nominal values.
     nominal: SceneInput,
@@ -254,6 +254,20 @@ impl Template {
     /// conflicting field (as [`SceneInput::from_json`]), naming its field.
     pub fn parse(scene: &Value, default_name: &str) -> Result<Self, FieldError> {
         Self::from_value(scene.clone(), default_name)
+    }
+
+    /// A line read flat ([`crate::scene_input::FlatScene`]): no ranges.
+    ///
+    /// # Errors
+    /// As [`SceneInput::from_json`].
+    pub(crate) fn from_flat(
+        flat: &crate::scene_input::FlatScene,
+        default_name: &str,
+    ) -> Result<Self, FieldError> {
+        Ok(Self {
+            nominal: SceneInput::from_object(flat, default_name)?,
+            params: Vec::new(),
+        })
     }
 
     /// As [`Template::parse`], taking the scene.
