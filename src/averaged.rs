@@ -9,7 +9,7 @@
 
 use crate::error::{non_negative, Error, Parameter, Reason};
 use crate::mechanisms::Dissipation;
-use crate::prediction::{Approximations, Count, Prediction, Tier, Time};
+use crate::prediction::{Approximations, Count, Course, Prediction, Tier, Time};
 use crate::quadrature::{integrate_exp, panel, Nodes, MAX_PANELS, PANEL_WIDTH};
 use crate::regime::Regime;
 use crate::{accuracy, Float, Scene};
@@ -313,28 +313,28 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
             ),
             None => (end_time, impacts_total, false),
         };
-        let mut approximations = accuracy::reduction_flags(self.scene);
-        if cap_end || cap_above {
-            approximations = approximations.with(Approximations::PANELS_CAPPED);
-        }
+        let approximations = if cap_end || cap_above {
+            Approximations::PANELS_CAPPED
+        } else {
+            Approximations::NONE
+        };
         let expected = accuracy::with_reduction(
             self.scene,
             accuracy::averaged(self.scene, impacts_total.value())
                 .map(|e| e + accuracy::quadrature::<F>(self.nodes)),
         );
-        if expected.is_none() {
-            approximations = approximations.with(Approximations::OUTSIDE_VALIDITY);
-        }
-        Prediction {
-            regime: self.scene.regime(),
-            end_time,
-            last_above_time,
-            impacts_above,
-            impacts_total,
-            tier: Tier::Averaged(self.nodes),
+        Prediction::of_tier(
+            self.scene,
+            Course {
+                end_time,
+                last_above_time,
+                impacts_above,
+                impacts_total,
+            },
+            Tier::Averaged(self.nodes),
             approximations,
-            expected_error: expected,
-        }
+            expected,
+        )
     }
 
     /// The envelope J(t) and the averaged impact count at time `t` >= 0 (s): the inverse of

@@ -7,7 +7,7 @@
 use crate::error::{derived, finite, non_negative, physical, Error, Parameter, Reason};
 use crate::float::{log_growth, log_growth_of_ratio};
 use crate::mechanisms::{offset_class, Dissipation, OffsetClass};
-use crate::prediction::{Approximations, ClosedForm, Count, Prediction, Tier, Time};
+use crate::prediction::{Approximations, ClosedForm, Count, Course, Prediction, Tier, Time};
 use crate::quadrature::Compensated;
 use crate::regime::Regime;
 use crate::{accuracy, Float, Scene};
@@ -393,20 +393,18 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Predi
         ),
         None => (end_time, impacts_total),
     };
-    let mut approximations = accuracy::reduction_flags(scene);
-    if expected.is_none() {
-        approximations = approximations.with(Approximations::OUTSIDE_VALIDITY);
-    }
-    Prediction {
-        regime: scene.regime(),
-        end_time,
-        last_above_time,
-        impacts_above,
-        impacts_total,
-        tier: Tier::Closed(form),
-        approximations,
-        expected_error: accuracy::with_reduction(scene, expected),
-    }
+    Prediction::of_tier(
+        scene,
+        Course {
+            end_time,
+            last_above_time,
+            impacts_above,
+            impacts_total,
+        },
+        Tier::Closed(form),
+        Approximations::NONE,
+        accuracy::with_reduction(scene, expected),
+    )
 }
 
 fn add_one<F: Float>(count: Count<F>) -> Count<F> {
@@ -479,18 +477,20 @@ fn exact_discrete<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Predictio
         }
         None => (end_time, Count::Infinite),
     };
-    Prediction {
-        regime: scene.regime(),
-        end_time,
-        last_above_time,
-        impacts_above,
-        impacts_total: Count::Infinite,
-        tier: Tier::Closed(if grazing_damped || scene.delta() == F::ZERO {
+    Prediction::of_tier(
+        scene,
+        Course {
+            end_time,
+            last_above_time,
+            impacts_above,
+            impacts_total: Count::Infinite,
+        },
+        Tier::Closed(if grazing_damped || scene.delta() == F::ZERO {
             ClosedForm::Grazing
         } else {
             ClosedForm::Undamped
         }),
-        approximations: accuracy::reduction_flags(scene),
-        expected_error: accuracy::with_reduction(scene, Some(accuracy::exact_sum::<F>())),
-    }
+        Approximations::NONE,
+        accuracy::with_reduction(scene, Some(accuracy::exact_sum::<F>())),
+    )
 }

@@ -18,7 +18,7 @@
 use crate::averaged::Averaged;
 use crate::exact::{Landing, Oscillator};
 use crate::mechanisms::Dissipation;
-use crate::prediction::{Approximations, Count, Prediction, Tier, Time};
+use crate::prediction::{Approximations, Count, Course, Prediction, Tier, Time};
 use crate::quadrature::{Compensated, Nodes};
 use crate::regime::Regime;
 use crate::{accuracy, Float, Scene};
@@ -344,7 +344,7 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
         },
     };
 
-    let mut approximations = accuracy::reduction_flags(scene);
+    let mut approximations = Approximations::NONE;
     let (end_time, impacts_total) = match stop {
         Stop::Ended(t, n) => (Time::At(t), Count::Finite(n)),
         Stop::BelowThreshold => (Time::Never, Count::Infinite),
@@ -397,17 +397,16 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
             _ => None,
         };
     }
-    if expected.is_none() {
-        approximations = approximations.with(Approximations::OUTSIDE_VALIDITY);
-    }
-    Prediction {
-        regime: scene.regime(),
-        end_time,
-        last_above_time,
-        impacts_above,
-        impacts_total,
-        tier: Tier::Map,
+    Prediction::of_tier(
+        scene,
+        Course {
+            end_time,
+            last_above_time,
+            impacts_above,
+            impacts_total,
+        },
+        Tier::Map,
         approximations,
-        expected_error: expected,
-    }
+        expected,
+    )
 }

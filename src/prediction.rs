@@ -1,7 +1,8 @@
 //! What every tier returns: one prediction type, with its provenance.
 
+use crate::mechanisms::Dissipation;
 use crate::regime::Regime;
-use crate::Float;
+use crate::{accuracy, Float, Scene};
 
 /// A time that may never come.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -182,7 +183,56 @@ pub struct Prediction<F> {
     pub expected_error: Option<F>,
 }
 
+/// What a tier finds of a bounce: its two times and two counts (as [`Prediction`] defines
+/// them).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Course<F> {
+    pub(crate) end_time: Time<F>,
+    pub(crate) last_above_time: Time<F>,
+    pub(crate) impacts_above: Count<F>,
+    pub(crate) impacts_total: Count<F>,
+}
+
+impl<F: Float> Course<F> {
+    /// One impact, at t = 0, that ends the bounce.
+    pub(crate) fn single_impact() -> Self {
+        let one = Count::Finite(F::ONE);
+        Self {
+            end_time: Time::At(F::ZERO),
+            last_above_time: Time::At(F::ZERO),
+            impacts_above: one,
+            impacts_total: one,
+        }
+    }
+}
+
 impl<F: Float> Prediction<F> {
+    /// A tier's prediction on `scene`: the scene's regime; the tier's own `approximations`
+    /// beside the scene's reduction flags; and [`Approximations::OUTSIDE_VALIDITY`] wherever
+    /// the tier states no expected error (every tier assembles its answer here).
+    pub(crate) fn of_tier<D: Dissipation<F>>(
+        scene: &Scene<F, D>,
+        course: Course<F>,
+        tier: Tier,
+        approximations: Approximations,
+        expected_error: Option<F>,
+    ) -> Self {
+        let mut approximations = approximations.with(accuracy::reduction_flags(scene));
+        if expected_error.is_none() {
+            approximations = approximations.with(Approximations::OUTSIDE_VALIDITY);
+        }
+        Self {
+            regime: scene.regime(),
+            end_time: course.end_time,
+            last_above_time: course.last_above_time,
+            impacts_above: course.impacts_above,
+            impacts_total: course.impacts_total,
+            tier,
+            approximations,
+            expected_error,
+        }
+    }
+
     /// Maps times and counts beyond the float's range to `Never` / `Infinite`, flagged
     /// [`Approximations::BEYOND_RANGE`] (NaN is left alone: it would be a bug), and keeps
     /// `last_above_time <= end_time` and `impacts_above <= impacts_total`.

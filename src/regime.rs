@@ -1,8 +1,8 @@
 //! Regimes of repeated collisions: docs/physics.md sec. 4 (verified by simulation).
 
 use crate::mechanisms::Dissipation;
-use crate::prediction::{Count, Prediction, Tier, Time};
-use crate::{accuracy, Float, Scene};
+use crate::prediction::{Approximations, Count, Course, Prediction, Tier, Time};
+use crate::{Float, Scene};
 
 /// How a bounce ends (docs/physics.md sec. 4).
 ///
@@ -91,25 +91,21 @@ pub(crate) fn answer<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Option
 
 /// A prediction that needs no model: single impact or periodic.
 fn by_regime<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Option<Prediction<F>> {
-    let base = Prediction {
-        regime: scene.regime(),
-        end_time: Time::Never,
-        last_above_time: Time::Never,
-        impacts_above: Count::Infinite,
-        impacts_total: Count::Infinite,
-        tier: Tier::Regime,
-        approximations: accuracy::reduction_flags(scene),
-        expected_error: Some(F::ZERO),
+    let course = match scene.regime() {
+        Regime::SingleImpact => Course::single_impact(),
+        Regime::Periodic => Course {
+            end_time: Time::Never,
+            last_above_time: Time::Never,
+            impacts_above: Count::Infinite,
+            impacts_total: Count::Infinite,
+        },
+        _ => return None,
     };
-    match scene.regime() {
-        Regime::SingleImpact => Some(Prediction {
-            end_time: Time::At(F::ZERO),
-            last_above_time: Time::At(F::ZERO),
-            impacts_above: Count::Finite(F::ONE),
-            impacts_total: Count::Finite(F::ONE),
-            ..base
-        }),
-        Regime::Periodic => Some(base),
-        _ => None,
-    }
+    Some(Prediction::of_tier(
+        scene,
+        course,
+        Tier::Regime,
+        Approximations::NONE,
+        Some(F::ZERO),
+    ))
 }

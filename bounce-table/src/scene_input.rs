@@ -138,19 +138,9 @@ impl Object for Map<String, Value> {
     }
 }
 
-/// The keys a scene line gives plain numbers under, at its top level.
-const FLAT: [&str; 10] = [
-    "omega",
-    "mass",
-    "stiffness",
-    "gap",
-    "preload_force",
-    "restitution",
-    "damping_ratio",
-    "closing_speed",
-    "threshold_impulse",
-    "threshold_fraction",
-];
+/// The keys a scene line gives plain numbers under, at its top level: [`KEYS`] but `name`,
+/// `kernel` and `two_body`.
+const FLAT: &[&str] = KEYS.split_at(1).1.split_at(KEYS.len() - 3).0;
 
 /// A scene line whose values are all plain (a number or null under a key of [`FLAT`], a
 /// string or null under `name`), read straight from its text into fixed slots: no JSON tree,

@@ -51,7 +51,7 @@ use crate::accuracy::{self, c};
 use crate::averaged::Averaged;
 use crate::closed;
 use crate::mechanisms::Dissipation;
-use crate::prediction::{Approximations, Count, Prediction, Tier, Time};
+use crate::prediction::{Approximations, Count, Course, Prediction, Tier, Time};
 use crate::quadrature::{Compensated, Nodes};
 use crate::regime::Regime;
 use crate::{Float, Scene};
@@ -480,17 +480,13 @@ pub(crate) fn ends_at_first_contact<F: Float, D: Dissipation<F>>(
     if top >= F::ZERO || oscillator.grazes(top) {
         return None;
     }
-    let one = Count::Finite(F::ONE);
-    Some(Prediction {
-        regime: scene.regime(),
-        end_time: Time::At(F::ZERO),
-        last_above_time: Time::At(F::ZERO),
-        impacts_above: one,
-        impacts_total: one,
-        tier: Tier::Regime,
-        approximations: accuracy::reduction_flags(scene),
-        expected_error: accuracy::with_reduction(scene, Some(F::ZERO)),
-    })
+    Some(Prediction::of_tier(
+        scene,
+        Course::single_impact(),
+        Tier::Regime,
+        Approximations::NONE,
+        accuracy::with_reduction(scene, Some(F::ZERO)),
+    ))
 }
 
 /// A sufficient condition, with no transcendental function, for a gap's flight leaving at
@@ -738,7 +734,7 @@ fn solve<F: Float, D: Dissipation<F>, M: Flights<F> + Copy>(
     };
     let count = F::from_u32(solved) + F::ONE;
     let elapsed = time.value();
-    let mut approximations = accuracy::reduction_flags(scene);
+    let mut approximations = Approximations::NONE;
     let mut last_above_time = Time::At(last_above);
     let mut impacts_above = Count::Finite(F::from_u32(above));
     let mut rest_error = F::ZERO;
@@ -832,19 +828,18 @@ fn solve<F: Float, D: Dissipation<F>, M: Flights<F> + Copy>(
     } else {
         accuracy::reduced(scene, Some(rounding + share))
     };
-    if expected.is_none() {
-        approximations = approximations.with(Approximations::OUTSIDE_VALIDITY);
-    }
-    Prediction {
-        regime: scene.regime(),
-        end_time,
-        last_above_time,
-        impacts_above,
-        impacts_total,
-        tier: Tier::Exact,
+    Prediction::of_tier(
+        scene,
+        Course {
+            end_time,
+            last_above_time,
+            impacts_above,
+            impacts_total,
+        },
+        Tier::Exact,
         approximations,
-        expected_error: expected,
-    }
+        expected,
+    )
 }
 
 #[cfg(test)]
