@@ -1,7 +1,7 @@
 //! The tables and the firmware constants: terminal, markdown, CSV, JSON, a C header and a Rust
 //! source file (windows in ticks of the chosen period; both compile as they are).
 
-use std::borrow::Cow;
+use std::fmt::Write as _;
 use std::io::Write;
 
 use serde_json::json;
@@ -42,62 +42,91 @@ impl Format {
     }
 }
 
-/// `format!("{x:.places$}")`, without the general formatter where the answer is plain: `x`
-/// scaled by 10^places (at most 3) and rounded, when that is below 10^12 and not within 10^-3
-/// of a tie. The scaled product is then within 6.2e-5 (half an ulp at 10^12) of the exact one,
-/// so both round to the same integer: the digits are the general formatter's (tested against
-/// it). Near a tie, beyond 10^12, or not finite, it is the general formatter. A table of a
-/// million rows formats four numbers a row, twice (once to fit the columns).
-pub(crate) fn fixed(x: f64, places: usize) -> String {
+/// Appends `format!("{x:.places$}")` to `out`, without the general formatter where the answer
+/// is plain: `x` scaled by 10^places (at most 3) and rounded, when that is below 10^12 and not
+/// within 10^-3 of a tie. The scaled product is then within 6.2e-5 (half an ulp at 10^12) of
+/// the exact one, so both round to the same integer: the digits are the general formatter's
+/// (tested against it). Near a tie, beyond 10^12, or not finite, it is the general formatter.
+/// A table of a million rows formats four numbers a row, twice (once to fit the columns).
+pub(crate) fn push_fixed(out: &mut String, x: f64, places: usize) {
     const SCALES: [f64; 4] = [1.0, 10.0, 100.0, 1000.0];
-    let general = || format!("{x:.places$}");
-    let Some(scale) = SCALES.get(places) else {
-        return general();
-    };
-    let scaled = x * scale;
-    if scaled.is_nan() || scaled.abs() >= 1e12 {
-        return general();
-    }
+    let scaled = SCALES.get(places).map_or(f64::NAN, |scale| x * scale);
     let rounded = scaled.round();
-    if ((scaled - rounded).abs() - 0.5).abs() <= 1e-3 {
-        return general();
+    if scaled.is_nan() || scaled.abs() >= 1e12 || ((scaled - rounded).abs() - 0.5).abs() <= 1e-3 {
+        // Writing to a String does not fail.
+        let _ = write!(out, "{x:.places$}");
+        return;
     }
-    // Below 10^12: a u64 holds it exactly.
+    // Below 10^12: a u64 holds it exactly; its digits, last first, at least places + 1.
     #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
-    let digits = (rounded.abs() as u64).to_string();
-    // At least one digit before the point.
-    let padded = if digits.len() <= places {
-        format!("{}{digits}", "0".repeat(places + 1 - digits.len()))
-    } else {
-        digits
-    };
-    let (whole, fraction) = padded.split_at(padded.len() - places);
-    let sign = if x.is_sign_negative() { "-" } else { "" };
-    if places == 0 {
-        format!("{sign}{whole}")
-    } else {
-        format!("{sign}{whole}.{fraction}")
+    let mut n = rounded.abs() as u64;
+    let mut digits = [b'0'; 24];
+    let mut len = 0;
+    for slot in &mut digits {
+        if n == 0 && len > places {
+            break;
+        }
+        // A digit: below 10.
+        #[allow(clippy::cast_possible_truncation)]
+        let digit = (n % 10) as u8;
+        *slot = b'0' + digit;
+        n /= 10;
+        len += 1;
+    }
+    if x.is_sign_negative() {
+        out.push('-');
+    }
+    for (k, d) in digits.iter().take(len).enumerate().rev() {
+        if k + 1 == places {
+            out.push('.');
+        }
+        out.push(char::from(*d));
     }
 }
 
-/// A time for people: us below 1 ms, ms below 1 s, s below a million seconds (11 days), then
-/// in powers of ten; "endless" when infinite.
-pub(crate) fn time(t: f64) -> String {
+/// `format!("{x:.places$}")`: see [`push_fixed`].
+#[cfg(test)]
+fn fixed(x: f64, places: usize) -> String {
+    let mut out = String::new();
+    push_fixed(&mut out, x, places);
+    out
+}
+
+/// Appends a time for people: us below 1 ms, ms below 1 s, s below a million seconds (11
+/// days), then in powers of ten; "endless" when infinite.
+fn push_time(out: &mut String, t: f64) {
     if !t.is_finite() {
-        "endless".to_owned()
+        out.push_str("endless");
     } else if t < 1e-3 {
-        fixed(t * 1e6, 2) + " us"
+        push_fixed(out, t * 1e6, 2);
+        out.push_str(" us");
     } else if t < 1.0 {
-        fixed(t * 1e3, 3) + " ms"
+        push_fixed(out, t * 1e3, 3);
+        out.push_str(" ms");
     } else if t < 1e6 {
-        fixed(t, 3) + " s"
+        push_fixed(out, t, 3);
+        out.push_str(" s");
     } else {
-        format!("{t:.3e} s")
+        let _ = write!(out, "{t:.3e} s");
     }
+}
+
+/// A time for people, as [`push_time`] writes it.
+pub(crate) fn time(t: f64) -> String {
+    let mut out = String::new();
+    push_time(&mut out, t);
+    out
+}
+
+fn push_percent(out: &mut String, x: f64) {
+    push_fixed(out, x * 100.0, 1);
+    out.push_str(" %");
 }
 
 fn percent(x: f64) -> String {
-    fixed(x * 100.0, 1) + " %"
+    let mut out = String::new();
+    push_percent(&mut out, x);
+    out
 }
 
 /// A switch's name made safe inside a generated comment (C `/* */`, Rust `///`): control
@@ -151,28 +180,59 @@ pub fn identifier(name: &str) -> String {
     }
 }
 
-fn columns<'a>(a: &'a Analysis, settings: &Settings) -> [Cow<'a, str>; 8] {
-    let window_label = match &a.monte_carlo {
-        Some(mc) => format!(
-            "{} (P{} of {})",
-            time(a.window),
-            settings.percentile,
-            mc.samples
-        ),
-        None => time(a.window),
-    };
-    [
-        Cow::Borrowed(a.name.as_str()),
-        Cow::Borrowed(a.nominal.regime.as_str()),
-        Cow::Owned(time(a.nominal.bounce)),
-        a.nominal
-            .impacts
-            .map_or(Cow::Borrowed("infinite"), |n| Cow::Owned(fixed(n, 0))),
-        Cow::Borrowed(a.nominal.tier.as_str()),
-        Cow::Owned(percent(a.nominal.expected_error)),
-        Cow::Owned(window_label),
-        Cow::Owned(a.ticks.to_string()),
-    ]
+/// One row's cells of the terminal table and the markdown one, written into one string (a
+/// million rows are a million strings, not eight million).
+struct Cells {
+    text: String,
+    /// Where each cell ends in `text`.
+    ends: [usize; 8],
+}
+
+impl Cells {
+    fn of(a: &Analysis, settings: &Settings) -> Self {
+        let mut text = String::with_capacity(a.name.len() + 96);
+        let mut ends = [0; 8];
+        let mut cell = 0;
+        let mut close = |text: &mut String| {
+            if let Some(end) = ends.get_mut(cell) {
+                *end = text.len();
+            }
+            cell += 1;
+        };
+        text.push_str(&a.name);
+        close(&mut text);
+        text.push_str(&a.nominal.regime);
+        close(&mut text);
+        push_time(&mut text, a.nominal.bounce);
+        close(&mut text);
+        match a.nominal.impacts {
+            Some(n) => push_fixed(&mut text, n, 0),
+            None => text.push_str("infinite"),
+        }
+        close(&mut text);
+        text.push_str(&a.nominal.tier);
+        close(&mut text);
+        push_percent(&mut text, a.nominal.expected_error);
+        close(&mut text);
+        push_time(&mut text, a.window);
+        if let Some(mc) = &a.monte_carlo {
+            let _ = write!(text, " (P{} of {})", settings.percentile, mc.samples);
+        }
+        close(&mut text);
+        let _ = write!(text, "{}", a.ticks);
+        close(&mut text);
+        Self { text, ends }
+    }
+
+    /// The cells, in order.
+    fn cells(&self) -> impl Iterator<Item = &str> {
+        let mut start = 0;
+        self.ends.iter().map(move |&end| {
+            let cell = self.text.get(start..end).unwrap_or("");
+            start = end;
+            cell
+        })
+    }
 }
 
 const HEADERS: [&str; 8] = [
@@ -331,7 +391,12 @@ impl Layout {
     /// The widths of one row's cells.
     #[must_use]
     pub fn of(a: &Analysis, settings: &Settings) -> Self {
-        Self(columns(a, settings).map(|c| c.chars().count()))
+        let cells = Cells::of(a, settings);
+        let mut widths = [0; 8];
+        for (w, c) in widths.iter_mut().zip(cells.cells()) {
+            *w = c.chars().count();
+        }
+        Self(widths)
     }
 
     /// Widened to hold `other`'s cells too.
@@ -385,10 +450,11 @@ pub fn render_to(
             };
             // Every cell but the last padded to its column's width (by hand: a width in a
             // format string is limited to 65,535, and a switch's name is not).
-            let line = |cells: &[Cow<'_, str>; 8]| {
+            let line = |cells: &mut dyn Iterator<Item = &str>| {
                 let mut text = String::with_capacity(widths.iter().sum::<usize>() + 2 * 8);
-                for (i, (c, w)) in cells.iter().zip(widths).enumerate() {
-                    if i + 1 == cells.len() {
+                let mut cells = cells.zip(widths).peekable();
+                while let Some((c, w)) = cells.next() {
+                    if cells.peek().is_none() {
                         text.push_str(c.trim_end());
                         text.push('\n');
                     } else {
@@ -399,9 +465,9 @@ pub fn render_to(
                 }
                 text
             };
-            out.write_all(line(&HEADERS.map(Cow::Borrowed)).as_bytes())?;
+            out.write_all(line(&mut HEADERS.into_iter()).as_bytes())?;
             write_rows(out, analyses, threads, &|a, _| {
-                Ok(line(&columns(a, settings)))
+                Ok(line(&mut Cells::of(a, settings).cells()))
             })?;
             closing_lines(analyses, out, typical)?;
         }
@@ -414,7 +480,13 @@ pub fn render_to(
             writeln!(out, "| {} |", HEADERS.join(" | "))?;
             writeln!(out, "|{}", "---|".repeat(8))?;
             write_rows(out, analyses, threads, &|a, _| {
-                Ok(format!("| {} |\n", columns(a, settings).join(" | ")))
+                Ok(format!(
+                    "| {} |\n",
+                    Cells::of(a, settings)
+                        .cells()
+                        .collect::<Vec<_>>()
+                        .join(" | ")
+                ))
             })?;
             closing_lines(analyses, out, typical)?;
         }
