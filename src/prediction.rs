@@ -1,6 +1,7 @@
 //! What every tier returns: one prediction type, with its provenance.
 
 use crate::mechanisms::Dissipation;
+use crate::quadrature::Nodes;
 use crate::regime::Regime;
 use crate::{accuracy, Float, Scene};
 
@@ -98,16 +99,38 @@ impl ClosedForm {
     }
 }
 
-/// The tier's name in reports: `regime`, `closed (Tb1v)`, `averaged N8`, `map`, `exact`.
+impl Tier {
+    /// Its name in reports: `regime`, `closed (Tb1v)`, `averaged N8`, `map`, `exact` (also its
+    /// `Display`): the closed form's [`ClosedForm::name`] and the averaged tier's node count
+    /// (tested against them).
+    #[must_use]
+    pub const fn name(self) -> &'static str {
+        match self {
+            Self::Regime => "regime",
+            Self::Closed(ClosedForm::Tb1v) => "closed (Tb1v)",
+            Self::Closed(ClosedForm::Tb2) => "closed (Tb2)",
+            Self::Closed(ClosedForm::Tb2r) => "closed (Tb2r)",
+            Self::Closed(ClosedForm::Asymptotic) => "closed (Asymptotic)",
+            Self::Closed(ClosedForm::Grazing) => "closed (Grazing)",
+            Self::Closed(ClosedForm::Undamped) => "closed (Undamped)",
+            Self::Averaged(Nodes::N2) => "averaged N2",
+            Self::Averaged(Nodes::N4) => "averaged N4",
+            Self::Averaged(Nodes::N6) => "averaged N6",
+            Self::Averaged(Nodes::N8) => "averaged N8",
+            Self::Averaged(Nodes::N10) => "averaged N10",
+            Self::Averaged(Nodes::N12) => "averaged N12",
+            Self::Averaged(Nodes::N16) => "averaged N16",
+            Self::Averaged(Nodes::N20) => "averaged N20",
+            Self::Map => "map",
+            Self::Exact => "exact",
+        }
+    }
+}
+
+/// [`Tier::name`].
 impl core::fmt::Display for Tier {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        match self {
-            Self::Regime => f.write_str("regime"),
-            Self::Closed(form) => write!(f, "closed ({})", form.name()),
-            Self::Averaged(nodes) => write!(f, "averaged N{}", nodes.count()),
-            Self::Map => f.write_str("map"),
-            Self::Exact => f.write_str("exact"),
-        }
+        f.write_str(self.name())
     }
 }
 

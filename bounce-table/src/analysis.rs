@@ -3,6 +3,7 @@
 //! and with ranges a seeded Monte Carlo (parallel) for the window at a percentile and the
 //! sensitivity of the bounce to each ranged parameter.
 
+use std::borrow::Cow;
 use std::sync::atomic::{AtomicU64, Ordering};
 
 use contact_bounce::{Method, Nodes, Prediction, Tolerance};
@@ -56,12 +57,12 @@ pub struct BounceEstimate {
     pub bounce: f64,
     /// Bounce time widened by the expected error (the exact reference: the time itself).
     pub upper: f64,
-    /// The regime.
-    pub regime: String,
+    /// The regime (its name: static where the estimate made it, no allocation a row).
+    pub regime: Cow<'static, str>,
     /// Impacts (above the threshold, or in all), if finite.
     pub impacts: Option<f64>,
     /// The tier ("closed (Tb1v)", "averaged N8", "map", "exact reference").
-    pub tier: String,
+    pub tier: Cow<'static, str>,
     /// Its expected error (0 for the exact reference).
     pub expected_error: f64,
 }
@@ -120,9 +121,9 @@ pub fn estimate(input: &SceneInput, tolerance: f64) -> Result<BounceEstimate, Fi
         Answer::Model(p) => BounceEstimate {
             bounce,
             upper,
-            regime: p.regime.name().to_owned(),
+            regime: Cow::Borrowed(p.regime.name()),
             impacts: p.impacts_above.value(),
-            tier: p.tier.to_string(),
+            tier: Cow::Borrowed(p.tier.name()),
             expected_error: p.expected_error.unwrap_or(0.0),
         },
         Answer::Exact(out) => {
@@ -132,9 +133,9 @@ pub fn estimate(input: &SceneInput, tolerance: f64) -> Result<BounceEstimate, Fi
             BounceEstimate {
                 bounce,
                 upper,
-                regime: regime.to_owned(),
+                regime: Cow::Borrowed(regime),
                 impacts,
-                tier: "exact reference".to_owned(),
+                tier: Cow::Borrowed("exact reference"),
                 expected_error: 0.0,
             }
         }

@@ -638,8 +638,8 @@ fn json_row(a: &Analysis, settings: &Settings, typical: bool) -> serde_json::Val
 }
 
 /// Writes `row(analysis, its index)` for every analysis, in order: read a block at a time and
-/// formatted on `threads` threads (a million rows are formatting, not writing). True if there
-/// was any row.
+/// formatted on `threads` threads (a million rows are formatting, not writing), the next block
+/// read and the last one written while this one is formatted. True if there was any row.
 fn write_rows(
     out: &mut dyn Write,
     analyses: &mut dyn Rows,
@@ -648,15 +648,22 @@ fn write_rows(
 ) -> std::io::Result<bool> {
     const BLOCK: usize = 4096;
     let mut rows = analyses.rows()?;
-    let mut first = 0;
-    loop {
-        let block = rows
-            .by_ref()
+    let mut read = || {
+        rows.by_ref()
             .take(BLOCK)
-            .collect::<std::io::Result<Vec<Analysis>>>()?;
-        if block.is_empty() {
-            return Ok(first > 0);
+            .collect::<std::io::Result<Vec<Analysis>>>()
+    };
+    let write = |out: &mut dyn Write, texts: Vec<std::io::Result<Vec<String>>>| {
+        for part in texts {
+            for text in part? {
+                out.write_all(text.as_bytes())?;
+            }
         }
+        Ok::<(), std::io::Error>(())
+    };
+    let (mut block, mut first, mut formatted) = (read()?, 0, Vec::new());
+    let any = !block.is_empty();
+    while !block.is_empty() {
         let workers = threads.clamp(1, block.len().div_ceil(256));
         let share = block.len().div_ceil(workers);
         let format_part = |k: usize| {
@@ -668,17 +675,25 @@ fn write_rows(
                 .map(|(i, a)| row(a, first + i))
                 .collect::<std::io::Result<Vec<String>>>()
         };
-        for (k, part) in crate::workers::each(workers, &format_part)
-            .into_iter()
-            .enumerate()
-        {
-            // A worker that panicked: its rows again, here.
-            for text in part.unwrap_or_else(|| format_part(k))? {
-                out.write_all(text.as_bytes())?;
-            }
-        }
+        let (texts, written, next) = std::thread::scope(|scope| {
+            let jobs = crate::workers::spawn_each(scope, workers, &format_part);
+            let written = write(out, std::mem::take(&mut formatted));
+            let next = read();
+            let texts: Vec<_> = jobs
+                .into_iter()
+                .enumerate()
+                // A worker that panicked: its rows again, here.
+                .map(|(k, job)| job.join(&format_part).unwrap_or_else(|| format_part(k)))
+                .collect();
+            (texts, written, next)
+        });
+        written?;
         first += block.len();
+        formatted = texts;
+        block = next?;
     }
+    write(out, formatted)?;
+    Ok(any)
 }
 
 #[cfg(test)]

@@ -240,15 +240,23 @@ fn read_flag(r: &mut impl Read) -> io::Result<bool> {
 fn read_text(r: &mut impl Read) -> io::Result<String> {
     let len = usize::try_from(read_u64(r)?)
         .map_err(|_| io::Error::new(io::ErrorKind::InvalidData, "spool: a text too long"))?;
-    let mut v = vec![0; len];
-    r.read_exact(&mut v)?;
+    let mut v = Vec::with_capacity(len.min(1 << 20));
+    let read = r
+        .take(u64::try_from(len).unwrap_or(u64::MAX))
+        .read_to_end(&mut v)?;
+    if read != len {
+        return Err(io::Error::new(
+            io::ErrorKind::UnexpectedEof,
+            "spool: a text cut short",
+        ));
+    }
     String::from_utf8(v).map_err(|e| io::Error::new(io::ErrorKind::InvalidData, e))
 }
 
 fn read_analysis(r: &mut impl Read) -> io::Result<Analysis> {
     let name = read_text(r)?;
-    let regime = read_text(r)?;
-    let tier = read_text(r)?;
+    let regime = read_text(r)?.into();
+    let tier = read_text(r)?.into();
     let [bounce, upper, expected_error, window] = [
         read_number(r)?,
         read_number(r)?,
@@ -316,9 +324,9 @@ mod tests {
             nominal: BounceEstimate {
                 bounce: 1.5e-4,
                 upper: f64::INFINITY,
-                regime: "zeno_accumulation".to_owned(),
+                regime: "zeno_accumulation".into(),
                 impacts: with_spread.then_some(13.0),
-                tier: "map".to_owned(),
+                tier: "map".into(),
                 expected_error: 0.004,
             },
             window: -0.0,

@@ -375,3 +375,33 @@ fn regimes_and_tiers_have_one_name_each() {
         assert_eq!(tier.to_string(), name);
     }
 }
+
+#[test]
+fn a_tier_is_named_by_its_closed_form_or_its_nodes() {
+    let forms = [
+        ClosedForm::Tb1v,
+        ClosedForm::Tb2,
+        ClosedForm::Tb2r,
+        ClosedForm::Asymptotic,
+        ClosedForm::Grazing,
+        ClosedForm::Undamped,
+    ];
+    for form in forms {
+        let tier = Tier::Closed(form);
+        assert_eq!(tier.name(), format!("closed ({})", form.name()));
+        assert_eq!(tier.to_string(), tier.name());
+    }
+    for nodes in Nodes::ALL {
+        let tier = Tier::Averaged(nodes);
+        assert_eq!(tier.name(), format!("averaged N{}", nodes.count()));
+        assert_eq!(tier.to_string(), tier.name());
+    }
+    for (tier, name) in [
+        (Tier::Regime, "regime"),
+        (Tier::Map, "map"),
+        (Tier::Exact, "exact"),
+    ] {
+        assert_eq!(tier.name(), name);
+        assert_eq!(tier.to_string(), name);
+    }
+}
