@@ -236,9 +236,10 @@ impl FlatScene {
         (!zero).then_some(scene)
     }
 
-    /// Its name, if given as a string.
-    pub(crate) fn name(&self) -> Option<&str> {
-        self.name.as_ref().and_then(Option::as_deref)
+    /// Its name, if given as a string, taken out (the scene then reads the default name,
+    /// which the caller makes this one).
+    pub(crate) fn take_name(&mut self) -> Option<String> {
+        self.name.take().flatten()
     }
 }
 

@@ -102,10 +102,10 @@ fn entry_of(file: &str, index: usize, scene: Value) -> Result<Entry, FileError> 
 /// A JSON Lines entry read flat ([`FlatScene`]), named as [`entry_of`] names it; `None` where
 /// the line needs the full reading, or has a fault (which the full reading names).
 fn flat_entry(line: &str, index: usize) -> Option<Entry> {
-    let flat = FlatScene::read(line)?;
+    let mut flat = FlatScene::read(line)?;
     let name = flat
-        .name()
-        .map_or_else(|| format!("entry {}", index + 1), str::to_owned);
+        .take_name()
+        .unwrap_or_else(|| format!("entry {}", index + 1));
     let template = Template::from_flat(&flat, &name).ok()?;
     Some(Entry { name, template })
 }
