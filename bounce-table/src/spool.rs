@@ -152,14 +152,14 @@ impl Spool {
     /// # Errors
     /// The file cannot be flushed or rewound.
     pub fn rows(&mut self) -> io::Result<Rows<'_>> {
-        let reader: Box<dyn Read + '_> = match &mut self.backing {
+        let reader = match &mut self.backing {
             Backing::File(f) => {
                 f.flush()?;
                 let file = f.get_mut();
                 file.seek(SeekFrom::Start(0))?;
-                Box::new(BufReader::new(file))
+                Reader::File(BufReader::new(file))
             }
-            Backing::Memory(v) => Box::new(v.as_slice()),
+            Backing::Memory(v) => Reader::Memory(v.as_slice()),
         };
         Ok(Rows {
             reader,
@@ -184,8 +184,16 @@ impl Drop for Spool {
 
 /// The analyses of a [`Spool`], read back.
 pub struct Rows<'a> {
-    reader: Box<dyn Read + 'a>,
+    reader: Reader<'a>,
     left: usize,
+}
+
+/// Where the records are read from: each its own type, so that a record's small reads are
+/// copies from a buffer, not calls through a trait object (a million records are 20 million
+/// reads).
+enum Reader<'a> {
+    File(BufReader<&'a mut File>),
+    Memory(&'a [u8]),
 }
 
 impl Iterator for Rows<'_> {
@@ -196,7 +204,10 @@ impl Iterator for Rows<'_> {
             return None;
         }
         self.left -= 1;
-        Some(read_analysis(&mut self.reader))
+        Some(match &mut self.reader {
+            Reader::File(r) => read_analysis(r),
+            Reader::Memory(r) => read_analysis(r),
+        })
     }
 }
 
@@ -240,16 +251,8 @@ fn read_flag(r: &mut impl Read) -> io::Result<bool> {
 fn read_text(r: &mut impl Read) -> io::Result<String> {
     let len = usize::try_from(read_u64(r)?)
         .map_err(|_| io::Error::new(io::ErrorKind::InvalidData, "spool: a text too long"))?;
-    let mut v = Vec::with_capacity(len.min(1 << 20));
-    let read = r
-        .take(u64::try_from(len).unwrap_or(u64::MAX))
-        .read_to_end(&mut v)?;
-    if read != len {
-        return Err(io::Error::new(
-            io::ErrorKind::UnexpectedEof,
-            "spool: a text cut short",
-        ));
-    }
+    let mut v = vec![0; len];
+    r.read_exact(&mut v)?;
     String::from_utf8(v).map_err(|e| io::Error::new(io::ErrorKind::InvalidData, e))
 }
 
