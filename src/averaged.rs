@@ -3,7 +3,8 @@
 //! Started from J_B = 2 R v0 (the first flight's generating impulse), the bounce time and the
 //! impact count are t = integral dJ / |E1|, n = 1 + integral dJ / (|E1| T), computed in s = ln J
 //! (smooth, bounded integrands) by composite Gauss-Legendre, panels at most 0.5 wide, with
-//! [`Nodes`] points each. Below J = [`Float::TAIL_CUTOFF`] Omega |Delta| the small-impulse
+//! [`Nodes`] points each. Below J = [`Tuning::TAIL_CUTOFF`](crate::model::Tuning::TAIL_CUTOFF)
+//! Omega |Delta| the small-impulse
 //! asymptote of E1 (docs/physics.md sec. 4) is integrated in closed form: its relative error there
 //! is O(cutoff), on a tail that is itself O(cutoff) of the total.
 

@@ -1,7 +1,8 @@
 //! The small float trait the model is generic over, with its math backends.
 //!
 //! One code path serves `f32` and `f64`. The trait is sealed: the numerical choices in this
-//! crate (series cut-offs, tail thresholds, tolerances) are tuned for exactly these two types.
+//! crate (series cut-offs, tail thresholds, tolerances: [`crate::model::Tuning`], which it
+//! requires) are tuned for exactly these two types. `Float` itself holds float operations only.
 //!
 //! # Backends (by precedence, never mutually exclusive)
 //! - `f64`: always [`libm`].
@@ -16,9 +17,7 @@
 use core::fmt::Debug;
 use core::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
 
-use crate::quadrature::table;
-
-mod sealed {
+pub(crate) mod sealed {
     pub trait Sealed {}
     impl Sealed for f32 {}
     impl Sealed for f64 {}
@@ -31,6 +30,7 @@ mod sealed {
 /// outside their domain after a [`Scene`](crate::Scene) has been validated.
 pub trait Float:
     sealed::Sealed
+    + crate::tuning::Tuning
     + 'static
     + Copy
     + Debug
@@ -60,20 +60,6 @@ pub trait Float:
     const MAX: Self;
     /// Smallest positive normal value.
     const MIN_POSITIVE: Self;
-    /// Below this |y| the model evaluates 1 - sin(y)/y by its Taylor series (docs/physics.md sec. 3:
-    /// 0.05 in f64, 0.5 in f32), where the direct form cancels.
-    const SINC_SERIES_LIMIT: Self;
-    /// A relative size below which an asymptotic small-impulse tail is exact to rounding
-    /// (about the cube root of epsilon: 6e-6 in f64, 5e-3 in f32).
-    const TAIL_CUTOFF: Self;
-    /// The relative error the math backend can add to a prediction: 0 for libm (its 1-2 ULP
-    /// are below the model's own errors), 0.15 for micromath (`f32` only; measured on the
-    /// host-tests sweep: its atan2 error of ~3e-3 rad is a large relative error of small
-    /// phases).
-    const BACKEND_ERROR: f64;
-    /// Terms of the Taylor series of [`Float::sin_within_pi`]: 10 in f64 (truncation below
-    /// 1e-18 at pi/2), 6 in f32 (below 4e-10).
-    const SIN_TERMS: u32;
 
     /// Converts an `f64` (rounds to nearest for `f32`).
     fn from_f64(x: f64) -> Self;
@@ -83,12 +69,6 @@ pub trait Float:
     fn from_f32(x: f32) -> Self;
     /// Converts a count (rounds to nearest for `f32` above 2^24).
     fn from_u32(n: u32) -> Self;
-    /// The Gauss-Legendre rule of `n` points (n in 2, 4, 6, 8, 10, 12, 16, 20), positive half.
-    fn gauss_legendre_half(n: crate::Nodes) -> &'static [(Self, Self)];
-    /// A preloaded flight's duration and return speed as series in the departure speed, in
-    /// this float (the exact tier's Zeno tail; packed as `exact::flight_series` says).
-    #[doc(hidden)]
-    const FLIGHT_SERIES: (&'static [Self], &'static [Self]);
 
     /// |x|.
     fn abs(self) -> Self;
@@ -179,84 +159,6 @@ pub const F32_BACKEND: &str = if cfg!(feature = "micromath") {
     "libm"
 };
 
-/// An `f64` constant rounded to the nearest `f32` (the intent of every narrowing below).
-#[allow(clippy::cast_possible_truncation, clippy::as_conversions)]
-const fn round_to_f32(x: f64) -> f32 {
-    x as f32
-}
-
-/// Converts an `f64` table to `f32` at compile time.
-const fn narrow<const N: usize>(wide: [(f64, f64); N]) -> [(f32, f32); N] {
-    let mut out = [(0.0f32, 0.0f32); N];
-    let mut i = 0;
-    while i < N {
-        // `i < N` bounds the index (const fn: no `get` on arrays in const context).
-        #[allow(clippy::indexing_slicing)]
-        {
-            out[i] = (round_to_f32(wide[i].0), round_to_f32(wide[i].1));
-        }
-        i += 1;
-    }
-    out
-}
-
-const fn same<const N: usize>(wide: [(f64, f64); N]) -> [(f64, f64); N] {
-    wide
-}
-
-/// A table of f64 constants rounded to f32 at compile time.
-const fn narrow_all<const N: usize>(wide: [f64; N]) -> [f32; N] {
-    let mut out = [0.0f32; N];
-    let mut i = 0;
-    while i < N {
-        #[allow(clippy::indexing_slicing)] // i < N
-        {
-            out[i] = round_to_f32(wide[i]);
-        }
-        i += 1;
-    }
-    out
-}
-
-macro_rules! select_rule {
-    ($n:expr, $ty:ty, $conv:path) => {{
-        match $n {
-            crate::Nodes::N2 => {
-                const R: &[($ty, $ty)] = &$conv(table::GL2);
-                R
-            }
-            crate::Nodes::N4 => {
-                const R: &[($ty, $ty)] = &$conv(table::GL4);
-                R
-            }
-            crate::Nodes::N6 => {
-                const R: &[($ty, $ty)] = &$conv(table::GL6);
-                R
-            }
-            crate::Nodes::N8 => {
-                const R: &[($ty, $ty)] = &$conv(table::GL8);
-                R
-            }
-            crate::Nodes::N10 => {
-                const R: &[($ty, $ty)] = &$conv(table::GL10);
-                R
-            }
-            crate::Nodes::N12 => {
-                const R: &[($ty, $ty)] = &$conv(table::GL12);
-                R
-            }
-            crate::Nodes::N16 => {
-                const R: &[($ty, $ty)] = &$conv(table::GL16);
-                R
-            }
-            crate::Nodes::N20 => {
-                const R: &[($ty, $ty)] = &$conv(table::GL20);
-                R
-            }
-        }
-    }};
-}
-
 impl Float for f64 {
     const ZERO: Self = 0.0;
     const ONE: Self = 1.0;
@@ -266,14 +168,6 @@ impl Float for f64 {
     const EPSILON: Self = f64::EPSILON;
     const MAX: Self = f64::MAX;
     const MIN_POSITIVE: Self = f64::MIN_POSITIVE;
-    const SINC_SERIES_LIMIT: Self = 0.05;
-    const TAIL_CUTOFF: Self = 6e-6;
-    const BACKEND_ERROR: f64 = 0.0;
-    const SIN_TERMS: u32 = 10;
-    const FLIGHT_SERIES: (&'static [Self], &'static [Self]) = (
-        &crate::exact::flight_series::FLIGHT_TIME,
-        &crate::exact::flight_series::RETURN_SPEED,
-    );
 
     #[inline]
     fn from_f64(x: f64) -> Self {
@@ -290,10 +184,6 @@ impl Float for f64 {
     #[inline]
     fn from_u32(n: u32) -> Self {
         f64::from(n)
-    }
-    #[inline]
-    fn gauss_legendre_half(n: crate::Nodes) -> &'static [(Self, Self)] {
-        select_rule!(n, f64, same)
     }
     #[inline]
     fn abs(self) -> Self {
@@ -395,18 +285,6 @@ impl Float for f32 {
     const EPSILON: Self = f32::EPSILON;
     const MAX: Self = f32::MAX;
     const MIN_POSITIVE: Self = f32::MIN_POSITIVE;
-    const SINC_SERIES_LIMIT: Self = 0.5;
-    const TAIL_CUTOFF: Self = 5e-3;
-    const BACKEND_ERROR: f64 = if cfg!(feature = "micromath") {
-        0.15
-    } else {
-        0.0
-    };
-    const SIN_TERMS: u32 = 6;
-    const FLIGHT_SERIES: (&'static [Self], &'static [Self]) = (
-        &narrow_all(crate::exact::flight_series::FLIGHT_TIME),
-        &narrow_all(crate::exact::flight_series::RETURN_SPEED),
-    );
 
     #[inline]
     fn from_f64(x: f64) -> Self {
@@ -427,10 +305,6 @@ impl Float for f32 {
         #[allow(clippy::cast_precision_loss, clippy::as_conversions)]
         let rounded = n as f32;
         rounded
-    }
-    #[inline]
-    fn gauss_legendre_half(n: crate::Nodes) -> &'static [(Self, Self)] {
-        select_rule!(n, f32, narrow)
     }
     #[inline]
     fn abs(self) -> Self {

@@ -91,6 +91,7 @@ mod quadrature;
 mod regime;
 pub mod scene;
 pub mod tiers;
+mod tuning;
 pub mod window;
 
 // The names most programs need, at the root; everything else in its module.

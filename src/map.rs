@@ -11,7 +11,8 @@
 //! from its return; a scene type without viscous damping links none of this.
 //!
 //! Iterations are bounded: a preload's Zeno tail is summed on the small-impulse asymptote once
-//! J < [`Float::TAIL_CUTOFF`] Omega |Delta|; past `max_impacts` the averaged model finishes
+//! J < [`Tuning::TAIL_CUTOFF`](crate::model::Tuning::TAIL_CUTOFF) Omega |Delta|; past
+//! `max_impacts` the averaged model finishes
 //! the sum (flagged [`Approximations::MAP_CONTINUED_AVERAGED`]). [`MapImpacts`] yields the
 //! impacts themselves.
 
@@ -48,7 +49,8 @@ pub enum MapEnd<F> {
     /// A preload's flight loses all its impulse to damping (first order): the contact closes
     /// after this flight time (s).
     Closes(F),
-    /// A preload's departure fell below [`Float::TAIL_CUTOFF`] Omega |Delta| (and below the
+    /// A preload's departure fell below [`Tuning::TAIL_CUTOFF`](crate::model::Tuning::TAIL_CUTOFF)
+    /// Omega |Delta| (and below the
     /// threshold, if any: the impacts above it are all iterated, so they are counted one by
     /// one): the rest is a Zeno tail, from this generating impulse (m/s).
     ZenoTail(F),

@@ -249,7 +249,7 @@ pub(crate) fn reduction_flags<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) 
 /// (1.7-4.5x off at a 10 % mismatch), no figure.
 ///
 /// Every tier's figure goes through here, which also adds the math backend's error
-/// ([`Float::BACKEND_ERROR`]).
+/// ([`Tuning::BACKEND_ERROR`](crate::model::Tuning::BACKEND_ERROR)).
 ///
 /// A relaxation kernel adds its static stiffness over the spring's, kappa tau / Omega^2, which
 /// the averaged model leaves out: on the exact hereditary reference every tier is off by about

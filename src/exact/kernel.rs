@@ -29,7 +29,8 @@
 //! gives t = (2a/g)(1 - 2 zeta Omega (2a/g) / 6 - g' (2a/g) / (3 g)) and a return speed
 //! a (1 - 2 zeta Omega (2a/g) / 3 + g' (2a/g) / (3 g))), the rest of the accumulation lasts
 //! T = (q / r)(1 - (q / r)(zeta Omega / 3 + g' / (3 g))), q = 2a / g, r = 1 - R. It is summed
-//! once q / r times those rates and Omega a / g are below [`Float::TAIL_CUTOFF`]; what is left
+//! once q / r times those rates and Omega a / g are below
+//! [`Tuning::TAIL_CUTOFF`](crate::model::Tuning::TAIL_CUTOFF); what is left
 //! out is of their squares' order.
 
 use super::{

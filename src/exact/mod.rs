@@ -24,7 +24,8 @@
 //! an epsilon of the bounce (f64: near 0.03 Omega |Delta|, where the first-order sum below
 //! waits for 6e-6 Omega |Delta|: ln(5000) / ln(1 / R) flights later). Over-damped
 //! (zeta > 1), it is summed to first order once the departure speed a is below
-//! [`Float::TAIL_CUTOFF`] Omega |Delta| and the damping's drift of
+//! [`Tuning::TAIL_CUTOFF`](crate::model::Tuning::TAIL_CUTOFF) Omega |Delta| and the damping's
+//! drift of
 //! the ratio of successive flights, d = 4 zeta a / (3 r Omega |Delta|), is below it too: the
 //! series of one flight gives t = (2a / (Omega^2 |Delta|)) (1 - 2 zeta a / (3 Omega |Delta|))
 //! and a return speed a (1 - 4 zeta a / (3 Omega |Delta|)), so the rest lasts
@@ -308,7 +309,8 @@ impl<F: Float> Oscillator<F> {
     /// A preload's return by Halley steps alone (y'' comes free from the equation of motion,
     /// and the convergence is cubic), from a guess within a few percent (the previous flight
     /// scaled as the undamped flights scale). Once a step is below a tenth of
-    /// [`Float::TAIL_CUTOFF`] (about the cube root of epsilon) of t, the next iterate is exact
+    /// [`Tuning::TAIL_CUTOFF`](crate::model::Tuning::TAIL_CUTOFF) (about the cube root of epsilon)
+    /// of t, the next iterate is exact
     /// to rounding, and so is the return speed carried to it by its Taylor series to second
     /// order: no further evaluation. `None` when a step leaves 10 % of the guess, the speed is
     /// not rising or [`HALLEY_STEPS`] steps do not settle; the bracketed search then decides.

@@ -10,7 +10,8 @@ use crate::Float;
 /// E1 term: -zeta Omega (J^2 + 4 Omega^2 Delta^2) / J * (1 - sin(2 theta) / (2 theta)),
 /// evaluated as -zeta Omega ((2 theta)^2 J + (2 theta q)(2 theta q / J)) (1 - sinc(2 theta)) /
 /// (2 theta)^2, q = 2 Omega Delta, with the series of docs/physics.md sec. 3 below
-/// [`Float::SINC_SERIES_LIMIT`] and sin(2 theta) = -2 J q / (J^2 + q^2) algebraically (one
+/// [`Tuning::SINC_SERIES_LIMIT`](crate::model::Tuning::SINC_SERIES_LIMIT) and sin(2 theta) = -2 J
+/// q / (J^2 + q^2) algebraically (one
 /// atan per evaluation, for theta; no sine, no hypot), so it is accurate to a few ULP for every
 /// J > 0 and does not underflow before J does.
 ///
@@ -46,7 +47,8 @@ impl<F: Float> Viscous<F> {
 }
 
 /// (1 - sin(y)/y) / y^2 for y in (0, 2 pi), given sin(y) computed stably by the caller: the
-/// series 1/6 (1 - y^2/20 (1 - y^2/42 (1 - y^2/72))) below [`Float::SINC_SERIES_LIMIT`]
+/// series 1/6 (1 - y^2/20 (1 - y^2/42 (1 - y^2/72))) below
+/// [`Tuning::SINC_SERIES_LIMIT`](crate::model::Tuning::SINC_SERIES_LIMIT)
 /// (docs/physics.md sec. 3), the direct form above. Dividing by y^2 keeps the loss from underflowing
 /// where y^2 would (y < 1e-154 in f64, 1e-19 in f32).
 pub(crate) fn one_minus_sinc_over_square<F: Float>(y: F, sin_y: F) -> F {

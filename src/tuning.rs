@@ -1,0 +1,147 @@
+//! The model's numerical choices for each float: where a series takes over from a closed form
+//! that cancels, where a small-impulse tail is exact to rounding, what error the math backend
+//! adds, and the tables (Gauss-Legendre rules, the flight series) in the float's own precision,
+//! narrowed from `f64` at compile time. Not float operations ([`crate::Float`] has those, and
+//! requires this trait); sealed like it: only `f32` and `f64` implement it.
+
+use crate::float::sealed::Sealed;
+use crate::quadrature::table;
+use crate::Nodes;
+
+/// The per-precision constants and tables the model is tuned with (see the module docs).
+pub trait Tuning: Sealed + Sized + 'static {
+    /// Below this |y| the model evaluates 1 - sin(y)/y by its Taylor series (docs/physics.md
+    /// sec. 3: 0.05 in f64, 0.5 in f32), where the direct form cancels.
+    const SINC_SERIES_LIMIT: Self;
+    /// A relative size below which an asymptotic small-impulse tail is exact to rounding
+    /// (about the cube root of epsilon: 6e-6 in f64, 5e-3 in f32).
+    const TAIL_CUTOFF: Self;
+    /// The relative error the math backend can add to a prediction: 0 for libm (its 1-2 ULP
+    /// are below the model's own errors), 0.15 for micromath (`f32` only; measured on the
+    /// host-tests sweep: its atan2 error of ~3e-3 rad is a large relative error of small
+    /// phases).
+    const BACKEND_ERROR: f64;
+    /// Terms of the Taylor series of [`Float::sin_within_pi`](crate::Float::sin_within_pi): 10
+    /// in f64 (truncation below 1e-18 at pi/2), 6 in f32 (below 4e-10).
+    const SIN_TERMS: u32;
+    /// A preloaded flight's duration and return speed as series in the departure speed, in
+    /// this float (the exact tier's Zeno tail; packed as `exact::flight_series` says).
+    #[doc(hidden)]
+    const FLIGHT_SERIES: (&'static [Self], &'static [Self]);
+    /// The Gauss-Legendre rule of `n` points (n in 2, 4, 6, 8, 10, 12, 16, 20), positive half.
+    fn gauss_legendre_half(n: Nodes) -> &'static [(Self, Self)];
+}
+
+/// An `f64` constant rounded to the nearest `f32` (the intent of every narrowing below).
+#[allow(clippy::cast_possible_truncation, clippy::as_conversions)]
+const fn round_to_f32(x: f64) -> f32 {
+    x as f32
+}
+
+/// Converts an `f64` table to `f32` at compile time.
+const fn narrow<const N: usize>(wide: [(f64, f64); N]) -> [(f32, f32); N] {
+    let mut out = [(0.0f32, 0.0f32); N];
+    let mut i = 0;
+    while i < N {
+        // `i < N` bounds the index (const fn: no `get` on arrays in const context).
+        #[allow(clippy::indexing_slicing)]
+        {
+            out[i] = (round_to_f32(wide[i].0), round_to_f32(wide[i].1));
+        }
+        i += 1;
+    }
+    out
+}
+
+const fn same<const N: usize>(wide: [(f64, f64); N]) -> [(f64, f64); N] {
+    wide
+}
+
+/// A table of f64 constants rounded to f32 at compile time.
+const fn narrow_all<const N: usize>(wide: [f64; N]) -> [f32; N] {
+    let mut out = [0.0f32; N];
+    let mut i = 0;
+    while i < N {
+        #[allow(clippy::indexing_slicing)] // i < N
+        {
+            out[i] = round_to_f32(wide[i]);
+        }
+        i += 1;
+    }
+    out
+}
+
+macro_rules! select_rule {
+    ($n:expr, $ty:ty, $conv:path) => {{
+        match $n {
+            crate::Nodes::N2 => {
+                const R: &[($ty, $ty)] = &$conv(table::GL2);
+                R
+            }
+            crate::Nodes::N4 => {
+                const R: &[($ty, $ty)] = &$conv(table::GL4);
+                R
+            }
+            crate::Nodes::N6 => {
+                const R: &[($ty, $ty)] = &$conv(table::GL6);
+                R
+            }
+            crate::Nodes::N8 => {
+                const R: &[($ty, $ty)] = &$conv(table::GL8);
+                R
+            }
+            crate::Nodes::N10 => {
+                const R: &[($ty, $ty)] = &$conv(table::GL10);
+                R
+            }
+            crate::Nodes::N12 => {
+                const R: &[($ty, $ty)] = &$conv(table::GL12);
+                R
+            }
+            crate::Nodes::N16 => {
+                const R: &[($ty, $ty)] = &$conv(table::GL16);
+                R
+            }
+            crate::Nodes::N20 => {
+                const R: &[($ty, $ty)] = &$conv(table::GL20);
+                R
+            }
+        }
+    }};
+}
+
+impl Tuning for f64 {
+    const SINC_SERIES_LIMIT: Self = 0.05;
+    const TAIL_CUTOFF: Self = 6e-6;
+    const BACKEND_ERROR: f64 = 0.0;
+    const SIN_TERMS: u32 = 10;
+    const FLIGHT_SERIES: (&'static [Self], &'static [Self]) = (
+        &crate::exact::flight_series::FLIGHT_TIME,
+        &crate::exact::flight_series::RETURN_SPEED,
+    );
+
+    #[inline]
+    fn gauss_legendre_half(n: Nodes) -> &'static [(Self, Self)] {
+        select_rule!(n, f64, same)
+    }
+}
+
+impl Tuning for f32 {
+    const SINC_SERIES_LIMIT: Self = 0.5;
+    const TAIL_CUTOFF: Self = 5e-3;
+    const BACKEND_ERROR: f64 = if cfg!(feature = "micromath") {
+        0.15
+    } else {
+        0.0
+    };
+    const SIN_TERMS: u32 = 6;
+    const FLIGHT_SERIES: (&'static [Self], &'static [Self]) = (
+        &narrow_all(crate::exact::flight_series::FLIGHT_TIME),
+        &narrow_all(crate::exact::flight_series::RETURN_SPEED),
+    );
+
+    #[inline]
+    fn gauss_legendre_half(n: Nodes) -> &'static [(Self, Self)] {
+        select_rule!(n, f32, narrow)
+    }
+}
