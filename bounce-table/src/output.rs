@@ -675,17 +675,8 @@ fn write_rows(
                 .map(|(i, a)| row(a, first + i))
                 .collect::<std::io::Result<Vec<String>>>()
         };
-        let (texts, written, next) = std::thread::scope(|scope| {
-            let jobs = crate::workers::spawn_each(scope, workers, &format_part);
-            let written = write(out, std::mem::take(&mut formatted));
-            let next = read();
-            let texts: Vec<_> = jobs
-                .into_iter()
-                .enumerate()
-                // A worker that panicked: its rows again, here.
-                .map(|(k, job)| job.join(&format_part).unwrap_or_else(|| format_part(k)))
-                .collect();
-            (texts, written, next)
+        let (texts, (written, next)) = crate::workers::each_while(workers, &format_part, || {
+            (write(out, std::mem::take(&mut formatted)), read())
         });
         written?;
         first += block.len();

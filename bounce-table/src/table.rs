@@ -197,20 +197,11 @@ pub fn analyse_all(
                 .map(|raw| outcome(raw, &inner, analyse_them, table))
                 .collect()
         };
-        let (outcomes, stored, next) = std::thread::scope(|scope| {
-            let jobs = crate::workers::spawn_each(scope, workers, &part);
-            let stored = store.take(std::mem::take(&mut pending));
-            let next = read();
-            let outcomes: Vec<Outcome> = jobs
-                .into_iter()
-                .enumerate()
-                // A worker that panicked: its entries again, here.
-                .flat_map(|(k, job)| job.join(&part).unwrap_or_else(|| part(k)))
-                .collect();
-            (outcomes, stored, next)
+        let (parts, (stored, next)) = crate::workers::each_while(workers, &part, || {
+            (store.take(std::mem::take(&mut pending)), read())
         });
         stored.ok()?;
-        pending = outcomes;
+        pending = parts.into_iter().flatten().collect();
         block = next;
     }
     store.take(pending).ok()?;

@@ -63,3 +63,24 @@ pub fn each<T: Send, W: Fn(usize) -> T + Sync>(n: usize, work: &W) -> Vec<Option
             .collect()
     })
 }
+
+/// `work(k)` for every k in 0..n on threads of their own (as [`spawn_each`]) while `meanwhile`
+/// runs on the calling thread: the results in order of k (a worker that panicked, or a thread
+/// refused, has its share run here), and `meanwhile`'s. A pipeline's step: this block worked
+/// on while the last one is stored and the next one read.
+pub fn each_while<T: Send, M, W: Fn(usize) -> T + Sync>(
+    n: usize,
+    work: &W,
+    meanwhile: impl FnOnce() -> M,
+) -> (Vec<T>, M) {
+    std::thread::scope(|scope| {
+        let jobs = spawn_each(scope, n, work);
+        let beside = meanwhile();
+        let results = jobs
+            .into_iter()
+            .enumerate()
+            .map(|(k, job)| job.join(work).unwrap_or_else(|| work(k)))
+            .collect();
+        (results, beside)
+    })
+}
