@@ -579,7 +579,7 @@ fn the_exact_tier_solves_kernels_to_1e_9() {
     // matrix exponential, on the kernel grid: same count, end within 1e-9. The reference is the
     // looser of the two here: on the 5,450-impact gap (R = 1, Omega tau = 10, kernel damping
     // 0.01) it is 3e-10 from the 60-digit solution, the tier 2e-13
-    // (`python3 scripts/kernel_mp.py 1000 0 1e-3 1 3 1e-2 2e5`: 23.34548347425504, a few
+    // (`python3 scripts/exact_mp.py 1000 0 1e-3 1 3 1e-2 2e5`: 23.34548347425504, a few
     // minutes; shorter cases run in `the_exact_kernel_tier_keeps_its_expected_error_to_60_digits`).
     use contact_bounce::tiers::Tier;
     use host_tests::grid::kernel_grid;
@@ -638,10 +638,10 @@ fn the_exact_tier_solves_kernels_to_1e_9() {
     assert!(f32_figures >= 25, "{f32_figures}");
 }
 
-/// The end time and the count (or "inf") of `scripts/kernel_mp.py` (60 digits) for
+/// The end time and the count (or "inf") of `scripts/exact_mp.py` (60 digits) for
 /// (Omega, zeta, Delta, R, v0, tau, kappa); kappa 0 is the viscous body alone.
 fn sixty_digits(args: [f64; 7]) -> (f64, String) {
-    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/../scripts/kernel_mp.py");
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/../scripts/exact_mp.py");
     let out = std::process::Command::new("python3")
         .arg(script)
         .args(args.map(|x| format!("{x:e}")))
@@ -661,7 +661,7 @@ fn sixty_digits(args: [f64; 7]) -> (f64, String) {
 #[test]
 fn the_exact_viscous_tier_keeps_its_expected_error_to_60_digits() {
     // Preloads with viscous damping, whose Zeno tails are summed as series in the departure
-    // (`src/exact/tail.rs`): against `scripts/kernel_mp.py` without a kernel. The tactile dome,
+    // (`src/exact/tail.rs`): against `scripts/exact_mp.py` without a kernel. The tactile dome,
     // heavy damping (zeta 0.5, 0.95), R near 1, and a first departure of 3 Omega |Delta| (the
     // series reaches only 0.25); f64 within its expected error, f32 within its own.
     use contact_bounce::{Contact, Frequency, Offset, Restitution, Scene, Threshold, Viscous};
@@ -716,7 +716,7 @@ fn the_exact_viscous_tier_keeps_its_expected_error_to_60_digits() {
 
 #[test]
 fn the_exact_kernel_tier_keeps_its_expected_error_to_60_digits() {
-    // Against `scripts/kernel_mp.py` (60-digit modes, steps and roots of its own): the kernel
+    // Against `scripts/exact_mp.py` (60-digit modes, steps and roots of its own): the kernel
     // alone, and with viscous damping, preload and gap, strong and weak kernels. The host
     // reference is too loose for this (up to 3e-10 on long gaps).
     use contact_bounce::{

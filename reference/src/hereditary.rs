@@ -89,7 +89,7 @@ impl Kernelled {
     /// The state's matrix for (x, v, s), s = kappa y / Omega^2 (y scaled to a length): the same
     /// motion as (x, v, y), but balanced. With y itself the matrix holds kappa (6e9 on the
     /// grid's strongest kernel) beside 1, and the scaling and squaring of [`expm`] lost 5e-9 of
-    /// the bounce time there (against the 60-digit solution of `scripts/kernel_mp.py`; measured
+    /// the bounce time there (against the 60-digit solution of `scripts/exact_mp.py`; measured
     /// before this balancing).
     fn matrix(&self) -> Mat {
         let w = self.omega;

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""A 60-digit solution of one body with an exponential relaxation kernel, for the core's exact
-tier to be checked against (host-tests `against_reference`).
+"""A 60-digit solution of one body with viscous damping and an exponential relaxation kernel
+(either may be absent), for the core's exact tier to be checked against (host-tests
+`against_reference`).
 
     x'' + 2 zeta Omega x' + Omega^2 x = u,   u' = kappa x - u / tau,
 
@@ -11,7 +12,7 @@ next impact found by steps of 1/16 of a period and refined by mpmath.findroot. A
 summed once the departure is below 1e-15 Omega |Delta| (what that leaves out is below 1e-28 of
 the bounce).
 
-Usage: kernel_mp.py OMEGA ZETA DELTA R V0 TAU KAPPA   (prints the end time and the count;
+Usage: exact_mp.py OMEGA ZETA DELTA R V0 TAU KAPPA   (prints the end time and the count;
 KAPPA 0 is the viscous body alone)
 """
 import sys
