@@ -104,9 +104,11 @@ pub trait Float:
     fn is_nan(self) -> bool;
 
     /// sin(x) for |x| <= pi, without range reduction: reflected into |y| <= pi/2
-    /// (sin(pi - y) = sin y) and summed as a Taylor series in Horner form. Absolute error a few
-    /// ULP; no table, no libm `sin` (whose range reduction costs ~3-7 KB of flash and does not
-    /// fit the Uno). Used where the model's arguments are bounded by construction.
+    /// (sin(pi - y) = sin y) and summed as a Taylor series in Horner form, multiplying by the
+    /// terms' reciprocals ([`Tuning::SIN_RECIPROCALS`](crate::model::Tuning::SIN_RECIPROCALS))
+    /// rather than dividing. Absolute error a few ULP; no libm `sin` (whose range reduction
+    /// costs ~3-7 KB of flash and does not fit the Uno). Used where the model's arguments are
+    /// bounded by construction.
     #[inline]
     fn sin_within_pi(self) -> Self {
         let a = self.abs();
@@ -114,11 +116,8 @@ pub trait Float:
         let y = if a > quarter { Self::PI - a } else { a };
         let y2 = y * y;
         let mut acc = Self::ONE;
-        let mut k = Self::SIN_TERMS;
-        while k > 0 {
-            let denominator = Self::from_u32((2 * k) * (2 * k + 1));
-            acc = Self::ONE - y2 / denominator * acc;
-            k -= 1;
+        for reciprocal in Self::SIN_RECIPROCALS.iter().rev() {
+            acc = Self::ONE - y2 * *reciprocal * acc;
         }
         let s = y * acc;
         if self < Self::ZERO {

@@ -21,9 +21,11 @@ pub trait Tuning: Sealed + Sized + 'static {
     /// host-tests sweep: its atan2 error of ~3e-3 rad is a large relative error of small
     /// phases).
     const BACKEND_ERROR: f64;
-    /// Terms of the Taylor series of [`Float::sin_within_pi`](crate::Float::sin_within_pi): 10
-    /// in f64 (truncation below 1e-18 at pi/2), 6 in f32 (below 4e-10).
-    const SIN_TERMS: u32;
+    /// The reciprocals 1 / ((2k)(2k + 1)), k = 1, 2, ..., of the Taylor series of
+    /// [`Float::sin_within_pi`](crate::Float::sin_within_pi) in Horner form, one a term: 10 in
+    /// f64 (truncation below 1e-18 at pi/2), 6 in f32 (below 4e-10). Multiplied, not divided:
+    /// a division a term was most of a sine's cost (and far more on a core without a divider).
+    const SIN_RECIPROCALS: &'static [Self];
     /// A preloaded flight's duration and return speed as series in the departure speed, in
     /// this float (the exact tier's Zeno tail; packed as `exact::flight_series` says).
     #[doc(hidden)]
@@ -110,11 +112,28 @@ macro_rules! select_rule {
     }};
 }
 
+/// 1 / ((2k)(2k + 1)) for k = 1..=N, each rounded once to f64.
+const fn sin_reciprocals<const N: usize>() -> [f64; N] {
+    let mut out = [0.0; N];
+    let mut k = 0;
+    while k < N {
+        // (2k + 2)(2k + 3) for the k-th entry (k from 0): exact in f64.
+        #[allow(clippy::cast_precision_loss, clippy::as_conversions)]
+        let denominator = ((2 * k + 2) * (2 * k + 3)) as f64;
+        #[allow(clippy::indexing_slicing)] // k < N
+        {
+            out[k] = 1.0 / denominator;
+        }
+        k += 1;
+    }
+    out
+}
+
 impl Tuning for f64 {
     const SINC_SERIES_LIMIT: Self = 0.05;
     const TAIL_CUTOFF: Self = 6e-6;
     const BACKEND_ERROR: f64 = 0.0;
-    const SIN_TERMS: u32 = 10;
+    const SIN_RECIPROCALS: &'static [Self] = &sin_reciprocals::<10>();
     const FLIGHT_SERIES: (&'static [Self], &'static [Self]) = (
         &crate::exact::flight_series::FLIGHT_TIME,
         &crate::exact::flight_series::RETURN_SPEED,
@@ -134,7 +153,7 @@ impl Tuning for f32 {
     } else {
         0.0
     };
-    const SIN_TERMS: u32 = 6;
+    const SIN_RECIPROCALS: &'static [Self] = &narrow_all(sin_reciprocals::<6>());
     const FLIGHT_SERIES: (&'static [Self], &'static [Self]) = (
         &narrow_all(crate::exact::flight_series::FLIGHT_TIME),
         &narrow_all(crate::exact::flight_series::RETURN_SPEED),
