@@ -577,14 +577,19 @@ struct Damped<'a, F> {
 impl<F: Float> Flights<F> for Damped<'_, F> {
     fn land(&mut self, departure: F) -> Landing<F> {
         let (omega, delta) = (self.oscillator.omega, self.oscillator.delta);
-        let undamped = F::TWO / omega * departure.atan2(-omega * delta);
         // The first guess: the flight's series where it reaches, else the last flight scaled
         // as the undamped flights scale, else (a preload's first flight) the undamped flight.
         // Where the guess is off by more than Halley's window, the bracketed search decides.
-        let series = self
-            .series
-            .and_then(|s| s.flight(departure / self.scale))
-            .map(|flight| flight / omega);
+        if let Some(series) = self.series.and_then(|s| s.flight(departure / self.scale)) {
+            // Departures only fall from here, so the series reaches every later flight and the
+            // scaled guess (an `atan2` a flight) is not needed again.
+            self.previous = None;
+            return self
+                .oscillator
+                .halley(departure, series / omega)
+                .unwrap_or_else(|| self.oscillator.land(departure));
+        }
+        let undamped = F::TWO / omega * departure.atan2(-omega * delta);
         let scaled = match self.previous {
             Some((flight, undamped_before)) if delta < F::ZERO && undamped_before > F::ZERO => {
                 Some(flight * (undamped / undamped_before))
@@ -592,9 +597,7 @@ impl<F: Float> Flights<F> for Damped<'_, F> {
             None if delta < F::ZERO && undamped > F::ZERO => Some(undamped),
             _ => None,
         };
-        let guessed = series
-            .or(scaled)
-            .and_then(|guess| self.oscillator.halley(departure, guess));
+        let guessed = scaled.and_then(|guess| self.oscillator.halley(departure, guess));
         let landing = guessed.unwrap_or_else(|| self.oscillator.land(departure));
         if let Landing::Returns { time, .. } = landing {
             self.previous = Some((time, undamped));
