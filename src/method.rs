@@ -55,8 +55,10 @@ pub enum Method<F> {
         max_impacts: u32,
     },
     /// The cheapest tier whose expected error (docs/physics.md sec. 6) is within the tolerance:
-    /// closed, then the map or the averaged model by their cost, then the exact tier, which
-    /// promises the float's rounding on every one-body scene with at most one kernel. Where
+    /// closed if it is; else the map, the averaged model and the exact tier in the order of
+    /// their estimated cost (known before any of them runs: impacts to walk, panels, flights;
+    /// weighed as on a Cortex-M4F, `docs/cost-report.md`), the exact tier always among them, as
+    /// it promises the float's rounding on every one-body scene with at most one kernel. Where
     /// nothing does (two kernels; f32 over very many impacts; a return decided by rounding) the
     /// smallest expected error wins: check [`Prediction::promises`]. Its worst-case work is the
     /// exact
@@ -64,6 +66,62 @@ pub enum Method<F> {
     /// ([`Scene::exact_work`]); firmware that cannot afford that names a tier, or
     /// `Method::Exact` with a smaller cap.
     Auto(Tolerance<F>),
+}
+
+/// The tiers Auto weighs after the closed tier.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Candidate {
+    Map,
+    Averaged,
+    Exact,
+}
+
+impl Candidate {
+    const ALL: [Self; 3] = [Self::Map, Self::Averaged, Self::Exact];
+
+    const fn index(self) -> usize {
+        match self {
+            Self::Map => 0,
+            Self::Averaged => 1,
+            Self::Exact => 2,
+        }
+    }
+}
+
+/// Auto's count of the impacts a tier walks one by one from the start down to a generating
+/// impulse (its floor): ln(J_B / floor) / ln(1 / R) in a Zeno accumulation (at least
+/// 1 / ln(1 / R)), else the closed tier's count (of impacts above the threshold where it has
+/// one), `F::MAX` where it has none. The logarithms are taken once for every tier's estimate.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Walk<F> {
+    /// ln J_B.
+    pub(crate) ln_start: F,
+    /// ln(1 / R) in a Zeno accumulation.
+    decay: Option<F>,
+    /// The closed tier's count elsewhere.
+    count: F,
+}
+
+impl<F: Float> Walk<F> {
+    fn new<D: Dissipation<F>>(scene: &Scene<F, D>, closed: &Prediction<F>, ln_start: F) -> Self {
+        let zeno = scene.regime() == Regime::ZenoAccumulation;
+        Self {
+            ln_start,
+            decay: zeno.then(|| -(-scene.loss()).ln_1p()),
+            count: closed
+                .impacts_above
+                .value()
+                .or(closed.impacts_total.value())
+                .unwrap_or(F::MAX),
+        }
+    }
+
+    /// Impacts walked down to the floor whose logarithm is `ln_floor`.
+    pub(crate) fn down_to(&self, ln_floor: F) -> F {
+        self.decay.map_or(self.count, |decay| {
+            (self.ln_start - ln_floor).max(F::ONE) / decay
+        })
+    }
 }
 
 impl<F: Float> Prediction<F> {
@@ -126,7 +184,8 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         // are in map impacts: on a Cortex-M4F (f32), on the tactile dome, an impact of the map
         // costs about 300 instructions (3594 over ~12 impacts walked before the Zeno tail) and
         // an E1 evaluation of the averaged tier about 185 (N8: 13323 over 9 panels x 8 nodes),
-        // so 0.6 of an impact (`docs/cost-report.md`, `scripts/cost-report.sh`).
+        // so 0.6 of an impact (`docs/cost-report.md`, `scripts/cost-report.sh`). The exact
+        // tier's is `exact::cost`.
         let estimate = closed.impacts_total.value();
         let averaged_error = accuracy::with_reduction(self, accuracy::averaged(self, estimate));
         let map_error = accuracy::with_reduction(self, accuracy::map(self, estimate));
@@ -135,58 +194,78 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
             .threshold_generating()
             .unwrap_or(start * F::TAIL_CUTOFF)
             .max(F::TAIL_CUTOFF * self.omega() * self.delta().abs());
-        let (panels, _) = panel_count((start.ln() - floor.ln()).max(F::ZERO));
+        let walk = Walk::new(self, &closed, start.ln());
+        let ln_floor = floor.ln();
+        let (panels, _) = panel_count((walk.ln_start - ln_floor).max(F::ZERO));
+        let per_evaluation = if self.dissipation().has_kernel() {
+            // With a kernel an E1 evaluation costs 5.2 times more (N8 on the dome: 69,830
+            // instructions with a kernel, 13,351 without).
+            3.1
+        } else {
+            0.6
+        };
         let averaged_cost =
-            F::from_u32(panels.saturating_mul(Nodes::N8.count())) * F::from_f64(0.6);
-        let map_cost = match (
-            self.regime(),
-            closed.impacts_above.value(),
-            closed.impacts_total.value(),
-        ) {
-            (Regime::ZenoAccumulation, _, _) => {
-                let decay = -(-self.loss()).ln_1p();
-                (start.ln() - floor.ln()).max(F::ONE) / decay
-            }
-            (_, Some(n), _) | (_, None, Some(n)) => n,
-            _ => F::MAX,
-        };
+            F::from_u32(panels.saturating_mul(Nodes::N8.count())) * F::from_f64(per_evaluation);
+        let map_cost = walk.down_to(ln_floor);
+        let exact_cost = exact::cost(self, &walk);
         let fits = |e: Option<F>| e.is_some_and(|e| e <= tolerance.get());
-        let cap = crate::map::DEFAULT_MAX_IMPACTS;
-        let run_map = || map::predict(self, cap);
-        let run_averaged = || Averaged::new(self, Nodes::N8).predict();
-        let map_first = map_cost <= averaged_cost;
-        // (true, _) for the map, (false, _) for the averaged model.
-        let cheaper = match (fits(map_error), fits(averaged_error), map_first) {
-            (true, true, true) | (true, false, _) => Some((true, run_map())),
-            (_, true, _) => Some((false, run_averaged())),
-            _ => None,
-        };
-        // A tier chosen on estimates states its own error once it has run (the map's, say,
-        // from the count it found): it is kept only if it still promises.
-        if let Some((_, p)) = cheaper {
-            if p.promises(tolerance) {
-                return p;
+        // The tiers expected to promise, cheapest first (on a tie the map, then the averaged
+        // model, then the exact tier, which always is). A tier chosen on estimates states its
+        // own error once it has run (the map's, say, from the count it found): it is kept
+        // only if it still promises. Where none does (a kernel, a return decided by rounding,
+        // f32 over many impacts), the smallest expected error wins; no tier is run twice.
+        let mut order = [
+            (map_cost, Candidate::Map, fits(map_error)),
+            (averaged_cost, Candidate::Averaged, fits(averaged_error)),
+            (exact_cost, Candidate::Exact, true),
+        ];
+        // Three entries, sorted stably by cost.
+        for (i, j) in [(0, 1), (1, 2), (0, 1)] {
+            if let (Some(first), Some(second)) = (order.get(i), order.get(j)) {
+                if second.0 < first.0 {
+                    order.swap(i, j);
+                }
             }
         }
-        // The exact tier, whose error is the float's rounding (or the averaged rest past its
-        // cap). If even it does not promise (a kernel, a return decided by rounding, f32 over
-        // many impacts), the smallest expected error wins (a tier already run is not rerun).
-        let exact = exact::predict(self, exact::EXACT_MAX_IMPACTS);
-        if exact.promises(tolerance) {
-            return exact;
-        }
-        let (map, averaged) = match cheaper {
-            Some((true, p)) => (p, run_averaged()),
-            Some((false, p)) => (run_map(), p),
-            None => (run_map(), run_averaged()),
-        };
-        let rank = |e: Option<F>| e.unwrap_or(F::MAX);
+        let rank = |p: &Prediction<F>| p.expected_error.unwrap_or(F::MAX);
         let mut best = closed;
-        for other in [map, averaged, exact] {
-            if rank(other.expected_error) < rank(best.expected_error) {
-                best = other;
+        let mut ran = [false; 3];
+        for (_, candidate, expected) in order {
+            if expected {
+                let p = self.run(candidate);
+                if p.promises(tolerance) {
+                    return p;
+                }
+                if let Some(done) = ran.get_mut(candidate.index()) {
+                    *done = true;
+                }
+                if rank(&p) < rank(&best) {
+                    best = p;
+                }
+            }
+        }
+        for (done, candidate) in ran.into_iter().zip(Candidate::ALL) {
+            if !done {
+                let p = self.run(candidate);
+                if rank(&p) < rank(&best) {
+                    best = p;
+                }
             }
         }
         best
+    }
+
+    /// One of Auto's candidates, at Auto's settings. Always inlined: outlined, it is a second
+    /// caller of each tier in every firmware (the `Auto` arm of `predict` is compiled before it
+    /// is found dead), and the inliner then outlines the tier a firmware names (+616 B for the
+    /// restitution-only averaged firmware on the M4F).
+    #[allow(clippy::inline_always)]
+    #[inline(always)]
+    fn run(&self, candidate: Candidate) -> Prediction<F> {
+        match candidate {
+            Candidate::Map => map::predict(self, crate::map::DEFAULT_MAX_IMPACTS),
+            Candidate::Averaged => Averaged::new(self, Nodes::N8).predict(),
+            Candidate::Exact => exact::predict(self, exact::EXACT_MAX_IMPACTS),
+        }
     }
 }

@@ -52,6 +52,7 @@ use crate::accuracy::{self, c};
 use crate::averaged::Averaged;
 use crate::closed;
 use crate::mechanisms::Dissipation;
+use crate::method::Walk;
 use crate::prediction::{Approximations, Count, Course, Prediction, Tier, Time};
 use crate::quadrature::{Compensated, Nodes};
 use crate::regime::Regime;
@@ -65,6 +66,12 @@ pub const EXACT_MAX_IMPACTS: u32 = 100_000;
 /// the bracket's own evaluations): with [`EXACT_MAX_IMPACTS`] it bounds the work of one
 /// prediction, see [`Scene::exact_work`].
 pub const ROOT_STEPS: u32 = 128;
+
+/// Auto's estimate of the exact tier's work with a relaxation kernel before its first flight,
+/// in map impacts (see [`cost`]).
+const KERNEL_BASE: f64 = 15.0;
+/// ... and a flight.
+const KERNEL_FLIGHT: f64 = 10.0;
 
 /// Most Halley steps tried from a guess before the bracketed search takes over.
 const HALLEY_STEPS: u32 = 6;
@@ -511,6 +518,43 @@ fn surely_returns<F: Float>(omega: F, zeta: F, delta: F, departure: F) -> bool {
     let amplitude = (delta * delta + k * k).sqrt();
     let margin = F::ONE + c::<F>(64.0) * F::EPSILON;
     amplitude.is_finite() && amplitude * (w / omega) * decay > delta * margin
+}
+
+/// [`Method::Auto`](crate::Method::Auto)'s estimate of this tier's work on `scene`, before it
+/// runs, in Auto's unit: an impact of the map, about 300 instructions on a Cortex-M4F in f32.
+/// Measured there (f32, the catalogue's switches and the tactile dome with a relaxation kernel,
+/// `docs/cost-report.md`): with viscous damping about 6,100 instructions before the first
+/// flight (the regime's closed forms, the tail's series) and 850 a flight, so 20 + 3 a flight;
+/// with a kernel, whose flights are solved mode by mode, about 4,500 and 2,900 a flight (5 to 37
+/// flights; a flight that does not return scans its whole bracket, up to 40,000), so 15 + 10.
+/// Flights are counted from the first impulse down to the threshold or to where the tail is
+/// summed (the series' departure, [`Tuning::SERIES_TAIL_DEPARTURE`](crate::model::Tuning),
+/// in a preload's Zeno accumulation with zeta <= 1; the first-order tail's elsewhere), or are the
+/// closed tier's count. Scenes this tier hands to the closed tier cost what it does.
+pub(crate) fn cost<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>, walk: &Walk<F>) -> F {
+    let dissipation = scene.dissipation();
+    if !dissipation.has_kernel() && (!dissipation.dissipates() || scene.delta() == F::ZERO) {
+        return F::ONE;
+    }
+    let scale = scene.omega() * scene.delta().abs();
+    let series = scene.delta() < F::ZERO
+        && !dissipation.has_kernel()
+        && dissipation.damping_ratio() <= F::ONE;
+    let tail = F::TWO
+        * scale
+        * if series {
+            F::SERIES_TAIL_DEPARTURE
+        } else {
+            F::TAIL_CUTOFF
+        };
+    let floor = scene.threshold_generating().map_or(tail, |t| t.min(tail));
+    let flights = walk.down_to(floor.ln());
+    let (base, per_flight) = if dissipation.has_kernel() {
+        (KERNEL_BASE, KERNEL_FLIGHT)
+    } else {
+        (20.0, 3.0)
+    };
+    c::<F>(base) + c::<F>(per_flight) * flights
 }
 
 /// Where the iteration stopped.
