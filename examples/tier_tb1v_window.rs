@@ -1,4 +1,4 @@
-//! Cost firmware: the lean closed form `preload_viscous_bounce_time` (t_b1v: restitution and viscous damping, no `Scene`) and its window, nothing else. Built by `scripts/cost-report.sh` for thumbv6m, thumbv7em and the
+//! Cost firmware: the lean closed form `preload_viscous_bounce_seconds` (t_b1v: restitution and viscous damping, no `Scene`, no expected error) and its window, nothing else. Built by `scripts/cost-report.sh` for thumbv6m, thumbv7em and the
 //! Uno (the skeleton is `common/tier_firmware.rs`); on the host it is an empty program.
 #![cfg_attr(any(target_os = "none", target_arch = "avr"), no_std, no_main)]
 #![cfg_attr(target_arch = "avr", feature(asm_experimental_arch))]
@@ -17,7 +17,7 @@ fn work() {
     firmware::measure_without_scene(|| {
         // The dome as f32 constants, hidden from the optimiser.
         let d = core::hint::black_box(firmware::DOME);
-        contact_bounce::tiers::preload_viscous_bounce_time(
+        contact_bounce::tiers::preload_viscous_bounce_seconds(
             d.mass,
             d.stiffness,
             d.preload_force,
@@ -25,9 +25,9 @@ fn work() {
             d.restitution,
             d.damping_ratio,
         )
-        .and_then(|e| {
+        .and_then(|time| {
             contact_bounce::Window::from_seconds(
-                e.time,
+                time,
                 &contact_bounce::Margin::none(),
                 core::hint::black_box(1e-5),
             )

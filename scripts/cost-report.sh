@@ -266,7 +266,7 @@ marks_qemu() { # elf target -> one count per interval between marks
   echo "\`tier_empty\`'s, the same skeleton with no crate code (thumbv6m: EMPTY6, thumbv7em: EMPTY7, Uno: EMPTYU"
   echo "bytes). The count is the call of the tier and its window (scene validation apart): instructions"
   echo "on Cortex-M (QEMU), cycles on the Uno (simavr). tb1v-window is the lean closed form"
-  echo "\`preload_viscous_bounce_time\` (t_b1v from the inputs, no \`Scene\`: its checks are in the count)"
+  echo "\`preload_viscous_bounce_seconds\` (t_b1v from the inputs, no \`Scene\` and no expected error: its checks are in the count)"
   echo "and its window; restitution-averaged the averaged tier (N8) on the dome without damping, a scene"
   echo "type that links no damping (its scene is built inside the count). Auto at 1 %. The Uno's"
   echo "float arithmetic is avr-libc's (\`.cargo/config.toml\`); a firmware that does not fit its 32 KB"

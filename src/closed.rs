@@ -35,7 +35,8 @@ impl<F: Float> Estimate<F> {
 
 /// t_b1v straight from a preloaded contact's datasheet-like inputs, with no [`Scene`]: the lean
 /// path for firmware that needs a window and nothing else (it links the checks, two square
-/// roots and one `ln_1p`; [`Scene::t_b1v`] gives the same value from a scene).
+/// roots and one `ln_1p`; [`Scene::t_b1v`] gives the same value from a scene), with its
+/// expected error. [`preload_viscous_bounce_seconds`] gives the time alone.
 ///
 /// t_b1v = (3 / (2 zeta Omega)) ln(1 + 2 zeta J_B / (3 r Omega |Delta|)), J_B = 2 R v0,
 /// Omega = sqrt(k / m), |Delta| = F / k: restitution and viscous damping, the bounce of a
@@ -71,6 +72,75 @@ pub fn preload_viscous_bounce_time<F: Float>(
     restitution: F,
     damping_ratio: F,
 ) -> Result<Estimate<F>, Error> {
+    let lean = lean_tb1v(
+        mass,
+        stiffness,
+        preload_force,
+        closing_speed,
+        restitution,
+        damping_ratio,
+    )?;
+    Ok(Estimate {
+        time: lean.time,
+        expected_error: accuracy::t_b1v(lean.j0, lean.restitution, lean.zeta),
+    })
+}
+
+/// t_b1v (s) alone, as [`preload_viscous_bounce_time`] computes it (the same value, the same
+/// errors), without its expected error: the leanest path from a preloaded contact's inputs to a
+/// window, for firmware that sets its margin itself ([`Window::from_seconds`]). The expected
+/// error it leaves out is up to 2.5 % plus the atan linearisation (a square root and two
+/// divisions: about a fifth of the call on an AVR).
+///
+/// [`Window::from_seconds`]: crate::Window::from_seconds
+///
+/// ```
+/// use contact_bounce::{tiers::preload_viscous_bounce_seconds, Margin, Window};
+/// let t = preload_viscous_bounce_seconds(5e-5_f32, 5000.0, 1.0, 0.5, 0.7, 0.03)?;
+/// let window = Window::from_seconds(t, &Margin::new(1.5, 0.0)?, 10e-6)?;
+/// assert_eq!(window.ticks(), 18); // 115.3 us, +50 %
+/// # Ok::<(), contact_bounce::Error>(())
+/// ```
+///
+/// # Errors
+/// As [`preload_viscous_bounce_time`].
+pub fn preload_viscous_bounce_seconds<F: Float>(
+    mass: F,
+    stiffness: F,
+    preload_force: F,
+    closing_speed: F,
+    restitution: F,
+    damping_ratio: F,
+) -> Result<F, Error> {
+    lean_tb1v(
+        mass,
+        stiffness,
+        preload_force,
+        closing_speed,
+        restitution,
+        damping_ratio,
+    )
+    .map(|lean| lean.time)
+}
+
+/// t_b1v from the inputs, with what its expected error needs.
+struct LeanTb1v<F> {
+    time: F,
+    j0: F,
+    restitution: F,
+    zeta: F,
+}
+
+/// The checks and the arithmetic of [`preload_viscous_bounce_time`].
+#[inline]
+fn lean_tb1v<F: Float>(
+    mass: F,
+    stiffness: F,
+    preload_force: F,
+    closing_speed: F,
+    restitution: F,
+    damping_ratio: F,
+) -> Result<LeanTb1v<F>, Error> {
     let mass = physical(mass, Parameter::Mass)?;
     let stiffness = physical(stiffness, Parameter::Stiffness)?;
     let force = physical(preload_force, Parameter::PreloadForce)?;
@@ -88,13 +158,21 @@ pub fn preload_viscous_bounce_time<F: Float>(
     {
         return Err(Error::new(Parameter::DampingRatio, Reason::OutOfRange));
     }
-    // Omega |Delta| = F / sqrt(k m) and 1 / Omega = sqrt(m / k), as products of square roots
-    // (k m can leave f32's range where each is inside it).
-    let (root_m, root_k) = (mass.sqrt(), stiffness.sqrt());
-    let scale = derived(force / (root_k * root_m), Parameter::PreloadForce)?;
+    // 1 / Omega = sqrt(m / k) and Omega |Delta| = F / sqrt(k m), sqrt(k m) = k sqrt(m / k): one
+    // square root where m / k is a normal number of the float, else (m and k at opposite ends of
+    // PHYSICAL_RANGE, where m / k or k m leaves f32's range) one for each.
+    let ratio = mass / stiffness;
+    let (period, root_km) = if ratio >= F::MIN_POSITIVE && ratio.is_finite() {
+        let root = ratio.sqrt();
+        (root, stiffness * root)
+    } else {
+        let (root_m, root_k) = (mass.sqrt(), stiffness.sqrt());
+        (root_m / root_k, root_k * root_m)
+    };
+    let scale = derived(force / root_km, Parameter::PreloadForce)?;
     // As Scene::new: an acceleration scale Omega (1 + R) v0 beyond the float's largest value
     // over 2^17 is refused.
-    if !(root_k / root_m * (F::ONE + restitution) * speed * F::from_f64(131_072.0)).is_finite() {
+    if !((F::ONE + restitution) * speed * F::from_f64(131_072.0) / period).is_finite() {
         return Err(Error::new(Parameter::ClosingSpeed, Reason::Overflow));
     }
     let start = F::TWO * restitution * speed;
@@ -103,10 +181,12 @@ pub fn preload_viscous_bounce_time<F: Float>(
         return Err(Error::new(Parameter::ClosingSpeed, Reason::Overflow));
     }
     let j0 = start / scale;
-    let time = log_growth_of_ratio(j0, loss, F::TWO * zeta / F::from_f64(3.0)) * (root_m / root_k);
-    Ok(Estimate {
+    let time = log_growth_of_ratio(j0, loss, zeta * F::from_f64(2.0 / 3.0)) * period;
+    Ok(LeanTb1v {
         time: derived(time, Parameter::PreloadForce)?,
-        expected_error: accuracy::t_b1v(j0, restitution, zeta),
+        j0,
+        restitution,
+        zeta,
     })
 }
 

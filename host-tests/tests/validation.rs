@@ -658,6 +658,44 @@ fn the_lean_t_b1v_agrees_with_the_scenes_and_refuses_what_the_scene_refuses() {
 }
 
 #[test]
+fn the_lean_t_b1v_alone_is_the_estimates_time_at_every_scale() {
+    // m / k from 1e-58 to 1e58: inside f32's normal range one square root serves (of m / k),
+    // outside it two (of m and of k); both agree with the f64 scene's t_b1v to f32's rounding,
+    // and the time alone is bit for bit the estimate's, refusals included.
+    use contact_bounce::tiers::{preload_viscous_bounce_seconds, preload_viscous_bounce_time};
+    let exponents = [-29, -20, -8, -4, 0, 3, 8, 20, 29];
+    let mut both_paths = (0, 0);
+    for em in exponents {
+        for ek in exponents {
+            let (m, k) = (10f64.powi(em), 10f64.powi(ek));
+            // A preload of 1 % of k times a metre-scale stroke, closing at 0.1 Omega |Delta|.
+            let (f, r, z) = (1e-2 * k.min(1e28), 0.7, 0.03);
+            let v = 0.1 * f / (k * m).sqrt();
+            #[allow(clippy::cast_possible_truncation)]
+            let narrow = |x: f64| x as f32;
+            let (mf, kf, ff, vf) = (narrow(m), narrow(k), narrow(f), narrow(v));
+            let lean = preload_viscous_bounce_time(mf, kf, ff, vf, 0.7, 0.03);
+            let alone = preload_viscous_bounce_seconds(mf, kf, ff, vf, 0.7, 0.03);
+            assert_eq!(lean.map(|e| e.time), alone, "m {m:e} k {k:e}");
+            let Ok(time) = alone else { continue };
+            let ratio = mf / kf;
+            if ratio.is_normal() {
+                both_paths.0 += 1;
+            } else {
+                both_paths.1 += 1;
+            }
+            let wide = preload_viscous_bounce_time(m, k, f, v, r, z).expect("valid in f64");
+            assert!(
+                (f64::from(time) / wide.time - 1.0).abs() < 1e-5,
+                "m {m:e} k {k:e}: {time:e} against {:e}",
+                wide.time
+            );
+        }
+    }
+    assert!(both_paths.0 > 0 && both_paths.1 > 0, "{both_paths:?}");
+}
+
+#[test]
 fn a_first_impulse_below_the_floor_is_refused() {
     // Found by the raw-bits harness (f32): v0 = 1e-30 m/s against 2 Omega |Delta| = 6e13 m/s,
     // a phase no float can hold; every tier returned a NaN time. Now refused, naming v0.
