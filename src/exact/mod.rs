@@ -334,12 +334,13 @@ impl<F: Float> Oscillator<F> {
                 return None;
             }
             let acceleration = -damping * v - w2 * (y + self.delta);
-            let newton = y / v;
-            let denominator = F::ONE - newton * acceleration / (F::TWO * v);
-            let step = if denominator > F::HALF {
-                newton / denominator
+            // Halley's step y / v / (1 - y a / (2 v^2)) = 2 y v / (2 v^2 - y a), one division;
+            // Newton's y / v where the correction would more than double it (y a >= v^2).
+            let (square, curvature) = (v * v, y * acceleration);
+            let step = if square > curvature {
+                F::TWO * y * v / (F::TWO * square - curvature)
             } else {
-                newton
+                y / v
             };
             let next = t - step;
             if !(next > low && next < high) {
