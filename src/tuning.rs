@@ -35,6 +35,11 @@ pub trait Tuning: Sealed + Sized + 'static {
     /// f64 (truncation below 1e-18 at pi/2), 6 in f32 (below 4e-10). Multiplied, not divided:
     /// a division a term was most of a sine's cost (and far more on a core without a divider).
     const SIN_RECIPROCALS: &'static [Self];
+    /// 1 / ((k + 1) k), k = 0, 1, ... (the first unused): the recurrence of the exact tier's
+    /// Taylor series of a short flight, in this float (converting an `f64` table term by term
+    /// linked a soft-float conversion, 838 bytes on the Uno, and ran it every term).
+    #[doc(hidden)]
+    const TAYLOR_RECIPROCALS: &'static [Self];
     /// A preloaded flight's duration and return speed as series in the departure speed, in
     /// this float (the exact tier's Zeno tail; packed as `exact::flight_series` says).
     #[doc(hidden)]
@@ -144,6 +149,7 @@ impl Tuning for f64 {
     const SERIES_TAIL_DEPARTURE: Self = 0.03;
     const BACKEND_ERROR: f64 = 0.0;
     const SIN_RECIPROCALS: &'static [Self] = &sin_reciprocals::<10>();
+    const TAYLOR_RECIPROCALS: &'static [Self] = &crate::exact::RECIPROCALS;
     const FLIGHT_SERIES: (&'static [Self], &'static [Self]) = (
         &crate::exact::flight_series::FLIGHT_TIME,
         &crate::exact::flight_series::RETURN_SPEED,
@@ -165,6 +171,7 @@ impl Tuning for f32 {
         0.0
     };
     const SIN_RECIPROCALS: &'static [Self] = &narrow_all(sin_reciprocals::<6>());
+    const TAYLOR_RECIPROCALS: &'static [Self] = &narrow_all(crate::exact::RECIPROCALS);
     const FLIGHT_SERIES: (&'static [Self], &'static [Self]) = (
         &narrow_all(crate::exact::flight_series::FLIGHT_TIME),
         &narrow_all(crate::exact::flight_series::RETURN_SPEED),

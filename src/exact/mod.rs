@@ -82,8 +82,9 @@ const HALLEY_STEPS: u32 = 6;
 const SERIES_LIMIT: f64 = 0.5;
 /// Most terms of that series (at lambda t = 0.5 the terms fall below 1e-17 after ~16).
 const SERIES_TERMS: usize = 40;
-/// 1 / ((k + 1) k), the series' recurrence without a division per term.
-const RECIPROCALS: [f64; SERIES_TERMS] = {
+/// 1 / ((k + 1) k), the series' recurrence without a division per term (in each float's
+/// precision: [`Tuning::TAYLOR_RECIPROCALS`](crate::model::Tuning)).
+pub(crate) const RECIPROCALS: [f64; SERIES_TERMS] = {
     let mut table = [0.0; SERIES_TERMS];
     let mut k = 1;
     while k < SERIES_TERMS {
@@ -265,12 +266,12 @@ impl<F: Float> Oscillator<F> {
         let (mut previous, mut current) = (-a, (alpha2 * a - w2 * self.delta) * F::HALF);
         let mut sum = TaylorSum::new(previous);
         let mut kf = F::ONE;
-        for reciprocal in RECIPROCALS.iter().skip(2) {
+        for reciprocal in F::TAYLOR_RECIPROCALS.iter().skip(2) {
             kf += F::ONE;
             if sum.add(kf, current, t, 2) {
                 break;
             }
-            let next = -(alpha2 * kf * current + w2 * previous) * F::from_f64(*reciprocal);
+            let next = -(alpha2 * kf * current + w2 * previous) * *reciprocal;
             previous = current;
             current = next;
         }
