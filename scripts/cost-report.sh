@@ -156,11 +156,11 @@ fi
   echo "kernel), flights counted to where its tail is summed. Its figure includes the closed tier it"
   echo "always runs first, and every tier it runs that then does not promise."
   echo
-  echo "| scene | validate | closed | averaged N8 | map | exact | auto (10 %) | auto (1 %) |"
-  echo "|---|---:|---:|---:|---:|---:|---:|---:|"
+  echo "| target | scene | validate | closed | averaged N8 | map | exact | auto (10 %) | auto (1 %) |"
+  echo "|---|---|---:|---:|---:|---:|---:|---:|---:|"
   for i in "${!scenes[@]}"; do
     b=$(( 7 * i ))
-    echo "| ${scenes[$i]} | ${k[$b]} | ${k[$((b + 1))]} | ${k[$((b + 2))]} | ${k[$((b + 3))]} | ${k[$((b + 4))]} | ${k[$((b + 5))]} | ${k[$((b + 6))]} |"
+    echo "| $target | ${scenes[$i]} | ${k[$b]} | ${k[$((b + 1))]} | ${k[$((b + 2))]} | ${k[$((b + 3))]} | ${k[$((b + 4))]} | ${k[$((b + 5))]} | ${k[$((b + 6))]} |"
   done
 } >> "$out"
 
