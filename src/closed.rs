@@ -162,7 +162,7 @@ fn lean_tb1v<F: Float>(
     // square root where m / k is a normal number of the float, else (m and k at opposite ends of
     // PHYSICAL_RANGE, where m / k or k m leaves f32's range) one for each.
     let ratio = mass / stiffness;
-    let (period, root_km) = if ratio >= F::MIN_POSITIVE && ratio.is_finite() {
+    let (inverse_omega, root_km) = if ratio >= F::MIN_POSITIVE && ratio.is_finite() {
         let root = ratio.sqrt();
         (root, stiffness * root)
     } else {
@@ -172,7 +172,7 @@ fn lean_tb1v<F: Float>(
     let scale = derived(force / root_km, Parameter::PreloadForce)?;
     // As Scene::new: an acceleration scale Omega (1 + R) v0 beyond the float's largest value
     // over 2^17 is refused.
-    if !((F::ONE + restitution) * speed * F::from_f64(131_072.0) / period).is_finite() {
+    if !((F::ONE + restitution) * speed * F::from_f64(131_072.0) / inverse_omega).is_finite() {
         return Err(Error::new(Parameter::ClosingSpeed, Reason::Overflow));
     }
     let start = F::TWO * restitution * speed;
@@ -181,7 +181,7 @@ fn lean_tb1v<F: Float>(
         return Err(Error::new(Parameter::ClosingSpeed, Reason::Overflow));
     }
     let j0 = start / scale;
-    let time = log_growth_of_ratio(j0, loss, zeta * F::from_f64(2.0 / 3.0)) * period;
+    let time = log_growth_of_ratio(j0, loss, zeta * F::from_f64(2.0 / 3.0)) * inverse_omega;
     Ok(LeanTb1v {
         time: derived(time, Parameter::PreloadForce)?,
         j0,

@@ -198,8 +198,8 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         let ln_floor = floor.ln();
         let (panels, _) = panel_count((walk.ln_start - ln_floor).max(F::ZERO));
         let per_evaluation = if self.dissipation().has_kernel() {
-            // With a kernel an E1 evaluation costs 5.2 times more (N8 on the dome: 69,830
-            // instructions with a kernel, 13,351 without).
+            // With a kernel an E1 evaluation costs 5.2 times more (N8 on the dome: about
+            // 69,800 instructions with a kernel, 13,350 without, `docs/cost-report.md`).
             3.1
         } else {
             0.6

@@ -526,7 +526,7 @@ fn surely_returns<F: Float>(omega: F, zeta: F, delta: F, departure: F) -> bool {
 /// runs, in Auto's unit: an impact of the map, about 300 instructions on a Cortex-M4F in f32.
 /// Measured there (f32, the catalogue's switches and the tactile dome with a relaxation kernel,
 /// `docs/cost-report.md`): with viscous damping about 6,100 instructions before the first
-/// flight (the regime's closed forms, the tail's series) and 850 a flight, so 20 + 3 a flight;
+/// flight (the regime's closed forms, the tail's series) and 850-920 a flight, so 20 + 3 a flight;
 /// with a kernel, whose flights are solved mode by mode, about 4,500 and 2,900 a flight (5 to 37
 /// flights; a flight that does not return scans its whole bracket, up to 40,000), so 15 + 10.
 /// Flights are counted from the first impulse down to the threshold or to where the tail is
