@@ -8,12 +8,67 @@
 //! asymptote of E1 (docs/physics.md sec. 4) is integrated in closed form: its relative error there
 //! is O(cutoff), on a tail that is itself O(cutoff) of the total.
 
-use crate::error::{non_negative, Error, Parameter, Reason};
+use crate::error::{derived, non_negative, Error, Parameter, Reason};
 use crate::mechanisms::Dissipation;
 use crate::prediction::{Approximations, Count, Course, Prediction, Tier, Time};
 use crate::quadrature::{integrate_exp, panel, Nodes, MAX_PANELS, PANEL_WIDTH};
 use crate::regime::Regime;
+use crate::scene::lean_preload;
 use crate::{accuracy, Float, Scene};
+
+/// The averaged model's bounce time (s) of a preloaded contact with restitution alone, straight
+/// from its datasheet-like inputs, with no [`Scene`] and no expected error: the lean path for
+/// firmware that needs a window and nothing else ([`Window::from_seconds`]). With E1 = -r J / T
+/// and T = 2 atan(J / |q|) / Omega, q = 2 Omega Delta, the bounce from J_B = 2 R v0 to rest takes
+///
+/// t = (2 / (r Omega)) Ti2(J_B / |q|), Ti2(x) = integral_0^x atan(y) / y dy,
+///
+/// in closed form: the value [`Method::Averaged`](crate::Method::Averaged) gives for the same
+/// contact as a `Scene<F, Undamped>` (to rounding; the nodes do not matter there), and it links
+/// the checks, one square root, twelve arctangents and one logarithm (above j0 = 2). Its error
+/// against the exact bounce is the averaged model's on a preload (`docs/physics.md` sec. 6:
+/// within 1 % for j0 <= 1); for an expected error, build the scene and predict.
+///
+/// [`Window::from_seconds`]: crate::Window::from_seconds
+///
+/// ```
+/// use contact_bounce::{tiers::preload_restitution_bounce_seconds, Margin, Window};
+/// let t = preload_restitution_bounce_seconds(5e-5_f32, 5000.0, 1.0, 0.5, 0.7)?;
+/// let window = Window::from_seconds(t, &Margin::new(1.5, 0.0)?, 10e-6)?;
+/// assert_eq!(window.ticks(), 18); // 116.3 us, +50 %
+/// # Ok::<(), contact_bounce::Error>(())
+/// ```
+///
+/// # Errors
+/// As [`preload_viscous_bounce_time`](crate::tiers::preload_viscous_bounce_time) with no
+/// damping: [`Parameter::Mass`], [`Parameter::Stiffness`], [`Parameter::PreloadForce`] or
+/// [`Parameter::ClosingSpeed`] outside [`PHYSICAL_RANGE`](crate::scene::PHYSICAL_RANGE);
+/// [`Parameter::Restitution`] outside [1e-6, 1 - 1e-12]; [`Parameter::ClosingSpeed`] with
+/// [`Reason::Overflow`] for a first impulse below [`Scene::impulse_floor`] or Omega (1 + R) v0
+/// above the float's largest value over 2^17; [`Parameter::PreloadForce`] with
+/// [`Reason::Overflow`] when the time leaves the float's range.
+pub fn preload_restitution_bounce_seconds<F: Float>(
+    mass: F,
+    stiffness: F,
+    preload_force: F,
+    closing_speed: F,
+    restitution: F,
+) -> Result<F, Error> {
+    let p = lean_preload(
+        mass,
+        stiffness,
+        preload_force,
+        closing_speed,
+        restitution,
+        F::ZERO,
+    )?;
+    // J_B / |q| = j0 / 2.
+    let integral = crate::quadrature::inverse_tangent_integral(p.j0 * F::HALF);
+    derived(
+        F::TWO * integral / p.loss * p.inverse_omega,
+        Parameter::PreloadForce,
+    )
+}
 
 /// The averaged model of a scene, integrated with a given number of nodes per panel.
 ///

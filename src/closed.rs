@@ -4,12 +4,13 @@
 //! one to expect on this scene (`None` outside every stated validity), so a caller knows when
 //! to trust it. A form that does not apply to the scene's regime returns `None`.
 
-use crate::error::{derived, finite, non_negative, physical, Error, Parameter, Reason};
+use crate::error::{derived, Error, Parameter};
 use crate::float::{log_growth, log_growth_of_ratio};
 use crate::mechanisms::{offset_class, Dissipation, OffsetClass};
 use crate::prediction::{Approximations, ClosedForm, Count, Course, Prediction, Tier, Time};
 use crate::quadrature::Compensated;
 use crate::regime::Regime;
+use crate::scene::lean_preload;
 use crate::{accuracy, Float, Scene};
 
 /// A closed-form time with the error to expect of it. The methods that give one
@@ -60,9 +61,9 @@ impl<F: Float> Estimate<F> {
 /// [`Parameter::PreloadForce`] or [`Parameter::ClosingSpeed`] outside
 /// [`PHYSICAL_RANGE`](crate::scene::PHYSICAL_RANGE); [`Parameter::Restitution`] outside
 /// [1e-6, 1 - 1e-12]; [`Parameter::DampingRatio`] negative, below 1e-12 but not 0, or above
-/// 1e3; [`Parameter::ClosingSpeed`] with [`Reason::Overflow`] for a first impulse below
+/// 1e3; [`Parameter::ClosingSpeed`] with [`Reason::Overflow`](crate::Reason::Overflow) for a first impulse below
 /// [`Scene::impulse_floor`] or Omega (1 + R) v0 above the float's largest value over 2^17;
-/// [`Parameter::PreloadForce`] with [`Reason::Overflow`] when the time leaves the float's
+/// [`Parameter::PreloadForce`] with [`Reason::Overflow`](crate::Reason::Overflow) when the time leaves the float's
 /// range.
 pub fn preload_viscous_bounce_time<F: Float>(
     mass: F,
@@ -141,52 +142,20 @@ fn lean_tb1v<F: Float>(
     restitution: F,
     damping_ratio: F,
 ) -> Result<LeanTb1v<F>, Error> {
-    let mass = physical(mass, Parameter::Mass)?;
-    let stiffness = physical(stiffness, Parameter::Stiffness)?;
-    let force = physical(preload_force, Parameter::PreloadForce)?;
-    let speed = physical(closing_speed, Parameter::ClosingSpeed)?;
-    let restitution = finite(restitution, Parameter::Restitution)?;
-    let loss = F::ONE - restitution;
-    if restitution < F::from_f64(crate::scene::SMALLEST_RESTITUTION)
-        || loss < F::from_f64(crate::scene::SMALLEST_RATE)
-    {
-        return Err(Error::new(Parameter::Restitution, Reason::OutOfRange));
-    }
-    let zeta = non_negative(damping_ratio, Parameter::DampingRatio)?;
-    if (zeta > F::ZERO && zeta < F::from_f64(crate::scene::SMALLEST_RATE))
-        || zeta > F::from_f64(crate::scene::LARGEST_DAMPING)
-    {
-        return Err(Error::new(Parameter::DampingRatio, Reason::OutOfRange));
-    }
-    // 1 / Omega = sqrt(m / k) and Omega |Delta| = F / sqrt(k m), sqrt(k m) = k sqrt(m / k): one
-    // square root where m / k is a normal number of the float, else (m and k at opposite ends of
-    // PHYSICAL_RANGE, where m / k or k m leaves f32's range) one for each.
-    let ratio = mass / stiffness;
-    let (inverse_omega, root_km) = if ratio >= F::MIN_POSITIVE && ratio.is_finite() {
-        let root = ratio.sqrt();
-        (root, stiffness * root)
-    } else {
-        let (root_m, root_k) = (mass.sqrt(), stiffness.sqrt());
-        (root_m / root_k, root_k * root_m)
-    };
-    let scale = derived(force / root_km, Parameter::PreloadForce)?;
-    // As Scene::new: an acceleration scale Omega (1 + R) v0 beyond the float's largest value
-    // over 2^17 is refused.
-    if !((F::ONE + restitution) * speed * F::from_f64(131_072.0) / inverse_omega).is_finite() {
-        return Err(Error::new(Parameter::ClosingSpeed, Reason::Overflow));
-    }
-    let start = F::TWO * restitution * speed;
-    // As Scene::new: a first impulse below the floor has no phase the float can hold.
-    if start < F::MIN_POSITIVE * F::from_f64(1e3) * (F::TWO * scale).max(F::ONE) {
-        return Err(Error::new(Parameter::ClosingSpeed, Reason::Overflow));
-    }
-    let j0 = start / scale;
-    let time = log_growth_of_ratio(j0, loss, zeta * F::from_f64(2.0 / 3.0)) * inverse_omega;
+    let p = lean_preload(
+        mass,
+        stiffness,
+        preload_force,
+        closing_speed,
+        restitution,
+        damping_ratio,
+    )?;
+    let time = log_growth_of_ratio(p.j0, p.loss, p.zeta * F::from_f64(2.0 / 3.0)) * p.inverse_omega;
     Ok(LeanTb1v {
         time: derived(time, Parameter::PreloadForce)?,
-        j0,
-        restitution,
-        zeta,
+        j0: p.j0,
+        restitution: p.restitution,
+        zeta: p.zeta,
     })
 }
 

@@ -166,6 +166,77 @@ fn check_domain<F: Float>(
     Ok(())
 }
 
+/// A preloaded contact's inputs, checked as [`Scene::new`] checks them, and what the lean paths
+/// (no `Scene`: [`preload_viscous_bounce_seconds`](crate::tiers::preload_viscous_bounce_seconds),
+/// [`preload_restitution_bounce_seconds`](crate::tiers::preload_restitution_bounce_seconds))
+/// compute from them.
+pub(crate) struct LeanPreload<F> {
+    /// 1 / Omega = sqrt(m / k) (s).
+    pub inverse_omega: F,
+    /// j0 = J_B / (Omega |Delta|), J_B = 2 R v0.
+    pub j0: F,
+    pub restitution: F,
+    /// r = 1 - R.
+    pub loss: F,
+    pub zeta: F,
+}
+
+/// The lean paths' checks, in [`Scene::new`]'s order and with its errors, and their common
+/// arithmetic (a restitution-only path passes zeta 0).
+#[inline]
+pub(crate) fn lean_preload<F: Float>(
+    mass: F,
+    stiffness: F,
+    preload_force: F,
+    closing_speed: F,
+    restitution: F,
+    damping_ratio: F,
+) -> Result<LeanPreload<F>, Error> {
+    let mass = physical(mass, Parameter::Mass)?;
+    let stiffness = physical(stiffness, Parameter::Stiffness)?;
+    let force = physical(preload_force, Parameter::PreloadForce)?;
+    let speed = physical(closing_speed, Parameter::ClosingSpeed)?;
+    let restitution = finite(restitution, Parameter::Restitution)?;
+    let loss = F::ONE - restitution;
+    if restitution < F::from_f64(SMALLEST_RESTITUTION) || loss < F::from_f64(SMALLEST_RATE) {
+        return Err(Error::new(Parameter::Restitution, Reason::OutOfRange));
+    }
+    let zeta = non_negative(damping_ratio, Parameter::DampingRatio)?;
+    if (zeta > F::ZERO && zeta < F::from_f64(SMALLEST_RATE)) || zeta > F::from_f64(LARGEST_DAMPING)
+    {
+        return Err(Error::new(Parameter::DampingRatio, Reason::OutOfRange));
+    }
+    // 1 / Omega = sqrt(m / k) and Omega |Delta| = F / sqrt(k m), sqrt(k m) = k sqrt(m / k): one
+    // square root where m / k is a normal number of the float, else (m and k at opposite ends of
+    // PHYSICAL_RANGE, where m / k or k m leaves f32's range) one for each.
+    let ratio = mass / stiffness;
+    let (inverse_omega, root_km) = if ratio >= F::MIN_POSITIVE && ratio.is_finite() {
+        let root = ratio.sqrt();
+        (root, stiffness * root)
+    } else {
+        let (root_m, root_k) = (mass.sqrt(), stiffness.sqrt());
+        (root_m / root_k, root_k * root_m)
+    };
+    let scale = derived(force / root_km, Parameter::PreloadForce)?;
+    // As Scene::new: an acceleration scale Omega (1 + R) v0 beyond the float's largest value
+    // over 2^17 is refused.
+    if !((F::ONE + restitution) * speed * F::from_f64(131_072.0) / inverse_omega).is_finite() {
+        return Err(Error::new(Parameter::ClosingSpeed, Reason::Overflow));
+    }
+    let start = F::TWO * restitution * speed;
+    // As Scene::new: a first impulse below the floor has no phase the float can hold.
+    if start < F::MIN_POSITIVE * F::from_f64(1e3) * (F::TWO * scale).max(F::ONE) {
+        return Err(Error::new(Parameter::ClosingSpeed, Reason::Overflow));
+    }
+    Ok(LeanPreload {
+        inverse_omega,
+        j0: start / scale,
+        restitution,
+        loss,
+        zeta,
+    })
+}
+
 /// The coefficient that ends (or decays) the regime must be a normal number, or the
 /// prediction would silently lose it (e.g. r Omega^2 |Delta| underflowing).
 fn check_regime_scale<F: Float>(

@@ -13,7 +13,9 @@
 //! error. `docs/physics.md` sec. 6 and `docs/trade-report.md` in the repository give each
 //! tier's measured accuracy and cost.
 
-pub use crate::averaged::{Averaged, Bodies, EnvelopePoint, Motion};
+pub use crate::averaged::{
+    preload_restitution_bounce_seconds, Averaged, Bodies, EnvelopePoint, Motion,
+};
 pub use crate::closed::{preload_viscous_bounce_seconds, preload_viscous_bounce_time, Estimate};
 pub use crate::exact::{EXACT_MAX_IMPACTS, KERNEL_FLIGHT_STEPS, ROOT_STEPS};
 pub use crate::map::{Impact, MapEnd, MapImpacts, DEFAULT_MAX_IMPACTS};

@@ -431,7 +431,8 @@ fn raw_inputs<F: Float + std::fmt::Debug>(
     n: usize,
     from_bits: impl Fn(u64) -> F + Copy,
 ) -> (usize, usize, Vec<String>) {
-    use contact_bounce::{tiers::preload_viscous_bounce_time, Margin, Window};
+    use contact_bounce::tiers::{preload_restitution_bounce_seconds, preload_viscous_bounce_time};
+    use contact_bounce::{Margin, Window};
     let (mut accepted, mut checked, mut faults) = (0, 0, Vec::new());
     let number = |x: F| x.is_finite() && x >= F::ZERO;
     for _ in 0..n {
@@ -474,6 +475,11 @@ fn raw_inputs<F: Float + std::fmt::Debug>(
         if let Ok(t) = preload_viscous_bounce_time(a, b, c, e, d, z) {
             if !number(t.time) || t.expected_error.is_some_and(|x| !number(x)) {
                 faults.push(format!("preload_viscous_bounce_time {t:?}, {what}"));
+            }
+        }
+        if let Ok(t) = preload_restitution_bounce_seconds(a, b, c, e, d) {
+            if !number(t) {
+                faults.push(format!("preload_restitution_bounce_seconds {t:?}, {what}"));
             }
         }
         if let Ok(m) = Margin::new(th, tol) {

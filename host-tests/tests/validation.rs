@@ -696,6 +696,117 @@ fn the_lean_t_b1v_alone_is_the_estimates_time_at_every_scale() {
 }
 
 #[test]
+fn the_lean_restitution_averaged_time_is_the_averaged_tiers_and_refuses_what_the_scene_refuses() {
+    // The closed-form Ti2 time against Method::Averaged on the same contact as a
+    // Scene<_, Undamped>, whose fall takes the same integral from the scene's own orbit (q =
+    // 2 Omega Delta from Omega and Delta, not from sqrt(k m)): equal to rounding in f64, and in
+    // f32 to f32's rounding of the inputs, on every catalogue switch and over m / k from 1e-58
+    // to 1e58 (both square-root paths of the checks).
+    use contact_bounce::{catalogue, tiers::preload_restitution_bounce_seconds, Method, Nodes};
+    let averaged = |m: f64, k: f64, f: f64, v: f64, r: f64| {
+        let contact = contact_bounce::Preloaded {
+            mass: m,
+            stiffness: k,
+            preload_force: f,
+            closing_speed: v,
+            restitution: r,
+            damping_ratio: 0.0,
+        }
+        .contact();
+        Scene::new(contact, Undamped)
+            .expect("valid")
+            .predict(Method::Averaged(Nodes::N8))
+            .end_time
+            .seconds()
+            .expect("a preload ends")
+    };
+    #[allow(clippy::cast_possible_truncation)]
+    let narrow = |x: f64| x as f32;
+    for d in catalogue::ALL {
+        let (m, k, f, v, r) = (
+            d.mass,
+            d.stiffness,
+            d.preload_force,
+            d.closing_speed,
+            d.restitution,
+        );
+        let full = averaged(m, k, f, v, r);
+        let lean = preload_restitution_bounce_seconds(m, k, f, v, r).expect("valid");
+        assert!(
+            (lean / full - 1.0).abs() < 1e-12,
+            "{}: {lean:e} vs {full:e}",
+            d.name
+        );
+        let single = preload_restitution_bounce_seconds(
+            narrow(m),
+            narrow(k),
+            narrow(f),
+            narrow(v),
+            narrow(r),
+        )
+        .expect("valid in f32");
+        assert!((f64::from(single) / full - 1.0).abs() < 1e-5, "{}", d.name);
+    }
+    let exponents = [-29, -20, -8, 0, 8, 20, 29];
+    let mut checked = 0;
+    for em in exponents {
+        for ek in exponents {
+            let (m, k) = (10f64.powi(em), 10f64.powi(ek));
+            let f = 1e-2 * k.min(1e28);
+            // j0 from 0.2 (below the reflection of Ti2) to 20 (above it).
+            for share in [0.1, 10.0] {
+                let v = share * f / (k * m).sqrt();
+                let single = preload_restitution_bounce_seconds(
+                    narrow(m),
+                    narrow(k),
+                    narrow(f),
+                    narrow(v),
+                    0.7,
+                );
+                let Ok(time) = single else { continue };
+                let wide = averaged(m, k, f, v, 0.7);
+                assert!(
+                    (f64::from(time) / wide - 1.0).abs() < 1e-5,
+                    "m {m:e} k {k:e} v {v:e}: {time:e} against {wide:e}"
+                );
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked > 40, "{checked}");
+    let d = catalogue::TACTILE_DOME;
+    let (m, k, f, v, r) = (
+        d.mass,
+        d.stiffness,
+        d.preload_force,
+        d.closing_speed,
+        d.restitution,
+    );
+    let refused = |m: f64, k: f64, f: f64, v: f64, r: f64| {
+        preload_restitution_bounce_seconds(m, k, f, v, r)
+            .map(|_| ())
+            .map_err(|e| e.parameter())
+    };
+    assert_eq!(refused(0.0, k, f, v, r), Err(Parameter::Mass));
+    assert_eq!(refused(m, f64::NAN, f, v, r), Err(Parameter::Stiffness));
+    assert_eq!(refused(m, k, -1.0, v, r), Err(Parameter::PreloadForce));
+    assert_eq!(refused(m, k, f, 1e31, r), Err(Parameter::ClosingSpeed));
+    assert_eq!(refused(m, k, f, v, 1.0), Err(Parameter::Restitution));
+    assert_eq!(refused(m, k, f, v, 0.0), Err(Parameter::Restitution));
+    assert_eq!(
+        refused(m, k, f, v, f64::INFINITY),
+        Err(Parameter::Restitution)
+    );
+    // The first impulse below the floor, as the scene (and the lean t_b1v) refuse it.
+    let floor =
+        preload_restitution_bounce_seconds(1000.0_f32, 1e-30, 1.0, 1e-30, 1.0 - 4.335_312e-5);
+    assert_eq!(
+        floor.map_err(|e| e.parameter()),
+        Err(Parameter::ClosingSpeed)
+    );
+}
+
+#[test]
 fn a_first_impulse_below_the_floor_is_refused() {
     // Found by the raw-bits harness (f32): v0 = 1e-30 m/s against 2 Omega |Delta| = 6e13 m/s,
     // a phase no float can hold; every tier returned a NaN time. Now refused, naming v0.
