@@ -3,9 +3,10 @@
 //! The switches and samples are those of `examples/c/switches.h`.
 
 use contact_bounce::{
-    tiers::preload_viscous_bounce_time, tiers::DEFAULT_MAX_IMPACTS, tiers::EXACT_MAX_IMPACTS,
-    Contact, Edge, Error, Frequency, Margin, Method, Mode, Nodes, Offset, Prediction, Restitution,
-    Scene, State, Threshold, Tolerance, Viscous, Window, Windows,
+    tiers::preload_restitution_bounce_seconds, tiers::preload_viscous_bounce_time,
+    tiers::DEFAULT_MAX_IMPACTS, tiers::EXACT_MAX_IMPACTS, Contact, Edge, Error, Frequency, Margin,
+    Method, Mode, Nodes, Offset, Prediction, Restitution, Scene, State, Threshold, Tolerance,
+    Viscous, Window, Windows,
 };
 
 /// mass, stiffness, offset, R, zeta, closing speed, threshold fraction (0: none).
@@ -63,6 +64,21 @@ fn main() -> Result<(), Error> {
             }
             // The C API numbers the parameter and the reason; the names are the same.
             Err(e) => println!("switch {i} tb1v error {} {}", e.parameter(), code(e)),
+        }
+        match preload_restitution_bounce_seconds(mass, stiffness, -offset * stiffness, v0, r) {
+            Ok(t) => {
+                #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+                let end_ns = (t * 1e9_f32) as u32;
+                let ticks = Margin::new(1.5_f32, 0.0)
+                    .and_then(|m| Window::from_seconds(t, &m, 1e-5))
+                    .map_or(0, |w| w.ticks());
+                println!("switch {i} restitution-averaged end_ns {end_ns} ticks {ticks}");
+            }
+            Err(e) => println!(
+                "switch {i} restitution-averaged error {} {}",
+                e.parameter(),
+                code(e)
+            ),
         }
         let scene = scene(s)?;
         for (tier, method) in [

@@ -346,6 +346,28 @@ cb_error cb_preload_bounce_time(float mass,
                                 float closing_speed,
                                 struct cb_estimate *out);
 
+// The lean path's time alone: `t_b1v` (s) as `cb_preload_bounce_time` computes it (the same
+// value, the same errors), without its expected error, into `seconds`: for firmware that sets its
+// margin itself (`cb_seconds_to_ticks`). `preload_force` in N (> 0).
+cb_error cb_preload_bounce_seconds(float mass,
+                                   float stiffness,
+                                   float preload_force,
+                                   float restitution,
+                                   float damping_ratio,
+                                   float closing_speed,
+                                   float *seconds);
+
+// The lean averaged path: a preloaded contact's bounce (s) under restitution alone, the averaged
+// model's time in closed form, straight from its inputs, with no scene and no expected error,
+// into `seconds` (within 1 % of the exact bounce for a first impulse up to the preload's scale,
+// j0 <= 1; the averaged tier's expected error needs a scene). `preload_force` in N (> 0).
+cb_error cb_preload_restitution_seconds(float mass,
+                                        float stiffness,
+                                        float preload_force,
+                                        float restitution,
+                                        float closing_speed,
+                                        float *seconds);
+
 // Fills `out` with windows of `press` and `release` samples (each at most
 // `CB_MAX_WINDOW_TICKS`, else `CB_PARAM_TIME` out of range).
 cb_error cb_windows_init(struct cb_windows *out, uint32_t press, uint32_t release, uint8_t mode);

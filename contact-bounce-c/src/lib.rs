@@ -23,10 +23,11 @@
 #![allow(non_camel_case_types)]
 
 use contact_bounce::{
-    scene::Regime, tiers::preload_viscous_bounce_time, tiers::Tier, tiers::DEFAULT_MAX_IMPACTS,
-    tiers::EXACT_MAX_IMPACTS, Contact, Edge, Error, Frequency, Margin, Method, Mode, Nodes, Offset,
-    Parameter, Prediction, Reason, Restitution, Scene, State, Threshold, Tolerance, Viscous,
-    Window, Windows,
+    scene::Regime, tiers::preload_restitution_bounce_seconds,
+    tiers::preload_viscous_bounce_seconds, tiers::preload_viscous_bounce_time, tiers::Tier,
+    tiers::DEFAULT_MAX_IMPACTS, tiers::EXACT_MAX_IMPACTS, Contact, Edge, Error, Frequency, Margin,
+    Method, Mode, Nodes, Offset, Parameter, Prediction, Reason, Restitution, Scene, State,
+    Threshold, Tolerance, Viscous, Window, Windows,
 };
 
 /// A panic cannot happen (the core and this crate have no panicking path); on a bare-metal
@@ -567,6 +568,71 @@ pub extern "C" fn cb_preload_bounce_time(
                 expected_error: e.expected_error.unwrap_or(0.0),
                 has_expected_error: u8::from(e.expected_error.is_some()),
             };
+            OK
+        }
+        Err(e) => e.into(),
+    }
+}
+
+/// The lean path's time alone: `t_b1v` (s) as `cb_preload_bounce_time` computes it (the same
+/// value, the same errors), without its expected error, into `seconds`: for firmware that sets its
+/// margin itself (`cb_seconds_to_ticks`). `preload_force` in N (> 0).
+#[allow(unsafe_code)]
+#[no_mangle]
+pub extern "C" fn cb_preload_bounce_seconds(
+    mass: f32,
+    stiffness: f32,
+    preload_force: f32,
+    restitution: f32,
+    damping_ratio: f32,
+    closing_speed: f32,
+    seconds: Option<&mut f32>,
+) -> cb_error {
+    let Some(seconds) = seconds else {
+        return NULL;
+    };
+    match preload_viscous_bounce_seconds(
+        mass,
+        stiffness,
+        preload_force,
+        closing_speed,
+        restitution,
+        damping_ratio,
+    ) {
+        Ok(t) => {
+            *seconds = t;
+            OK
+        }
+        Err(e) => e.into(),
+    }
+}
+
+/// The lean averaged path: a preloaded contact's bounce (s) under restitution alone, the averaged
+/// model's time in closed form, straight from its inputs, with no scene and no expected error,
+/// into `seconds` (within 1 % of the exact bounce for a first impulse up to the preload's scale,
+/// j0 <= 1; the averaged tier's expected error needs a scene). `preload_force` in N (> 0).
+#[allow(unsafe_code)]
+#[no_mangle]
+pub extern "C" fn cb_preload_restitution_seconds(
+    mass: f32,
+    stiffness: f32,
+    preload_force: f32,
+    restitution: f32,
+    closing_speed: f32,
+    seconds: Option<&mut f32>,
+) -> cb_error {
+    let Some(seconds) = seconds else {
+        return NULL;
+    };
+    match preload_restitution_bounce_seconds(
+        mass,
+        stiffness,
+        preload_force,
+        closing_speed,
+        restitution,
+    ) {
+        Ok(t) => {
+            *seconds = t;
             OK
         }
         Err(e) => e.into(),

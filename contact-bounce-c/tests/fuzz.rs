@@ -8,9 +8,10 @@
 use contact_bounce_c::{
     cb_code, cb_error, cb_estimate, cb_parameter, cb_parameter_name, cb_pin, cb_pin_init,
     cb_pin_is_closed, cb_pin_update, cb_predict_auto, cb_predict_averaged, cb_predict_closed,
-    cb_predict_exact, cb_predict_map, cb_prediction, cb_preload_bounce_time, cb_seconds_to_ticks,
-    cb_switch, cb_switch_check, cb_window_ticks, cb_windows, cb_windows_init, CB_HAS_COUNT,
-    CB_HAS_END, CB_HAS_EXPECTED_ERROR, CB_HAS_LAST_ABOVE,
+    cb_predict_exact, cb_predict_map, cb_prediction, cb_preload_bounce_seconds,
+    cb_preload_bounce_time, cb_preload_restitution_seconds, cb_seconds_to_ticks, cb_switch,
+    cb_switch_check, cb_window_ticks, cb_windows, cb_windows_init, CB_HAS_COUNT, CB_HAS_END,
+    CB_HAS_EXPECTED_ERROR, CB_HAS_LAST_ABOVE,
 };
 
 struct Rng(u64);
@@ -198,6 +199,46 @@ fn raw_inputs_to_the_c_api_get_error_codes_or_sound_answers() {
         {
             faults.push(format!(
                 "tb1v: a NaN, infinite or negative estimate {est:?} for {sw:?}"
+            ));
+        }
+        // The lean times alone: the estimate's time, or the same refusal; the averaged one a
+        // number wherever it answers.
+        let force = rng.value();
+        let (mut alone, mut averaged) = (-1.0_f32, -1.0_f32);
+        let seconds = cb_preload_bounce_seconds(
+            sw.mass,
+            sw.stiffness,
+            force,
+            sw.restitution,
+            sw.damping_ratio,
+            sw.closing_speed,
+            Some(&mut alone),
+        );
+        let e = cb_preload_bounce_time(
+            sw.mass,
+            sw.stiffness,
+            force,
+            sw.restitution,
+            sw.damping_ratio,
+            sw.closing_speed,
+            Some(&mut est),
+        );
+        if seconds != e || (e.code() == 0 && alone.to_bits() != est.time.to_bits()) {
+            faults.push(format!(
+                "tb1v seconds: {seconds:?} {alone} against {e:?} {est:?} for {sw:?}"
+            ));
+        }
+        let e = cb_preload_restitution_seconds(
+            sw.mass,
+            sw.stiffness,
+            force,
+            sw.restitution,
+            sw.closing_speed,
+            Some(&mut averaged),
+        );
+        if e.code() == 0 && !(averaged.is_finite() && averaged >= 0.0) {
+            faults.push(format!(
+                "restitution seconds: a NaN, infinite or negative time {averaged} for {sw:?}"
             ));
         }
         let mut ticks = 0;

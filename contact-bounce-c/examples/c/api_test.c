@@ -73,6 +73,19 @@ static void bad_inputs(void) {
     expect(cb_preload_bounce_time(5e-5f, 5000.0f, 1.0f, 0.7f, 0.03f, 0.5f, NULL), CB_ERR_NULL, CB_PARAM_POINTER, "NULL estimate");
     expect(cb_preload_bounce_time(5e-5f, 5000.0f, -1.0f, 0.7f, 0.03f, 0.5f, &est), CB_ERR_NOT_POSITIVE, CB_PARAM_PRELOAD_FORCE, "negative preload force");
     expect(cb_preload_bounce_time(5e-5f, 5000.0f, 1.0f, NAN, 0.03f, 0.5f, &est), CB_ERR_NAN, CB_PARAM_RESTITUTION, "NaN R, lean path");
+    float seconds = -1.0f;
+    expect(cb_preload_bounce_seconds(5e-5f, 5000.0f, 1.0f, 0.7f, 0.03f, 0.5f, NULL), CB_ERR_NULL, CB_PARAM_POINTER, "NULL seconds, lean path");
+    expect(cb_preload_bounce_seconds(5e-5f, 5000.0f, 1.0f, 0.7f, -0.1f, 0.5f, &seconds), CB_ERR_NEGATIVE, CB_PARAM_DAMPING_RATIO, "negative zeta, lean path");
+    expect(cb_preload_bounce_seconds(5e-5f, 5000.0f, 1.0f, 0.7f, 0.03f, 0.5f, &seconds), CB_OK, CB_PARAM_NONE, "the lean time alone");
+    expect(cb_preload_bounce_time(5e-5f, 5000.0f, 1.0f, 0.7f, 0.03f, 0.5f, &est), CB_OK, CB_PARAM_NONE, "the lean estimate");
+    if (seconds != est.time) {
+        fprintf(stderr, "FAIL the lean time alone %g is not the estimate's %g\n", (double)seconds, (double)est.time);
+        failures++;
+    }
+    expect(cb_preload_restitution_seconds(5e-5f, 5000.0f, 1.0f, 0.7f, 0.5f, NULL), CB_ERR_NULL, CB_PARAM_POINTER, "NULL seconds, averaged lean path");
+    expect(cb_preload_restitution_seconds(5e-5f, 5000.0f, 1.0f, NAN, 0.5f, &seconds), CB_ERR_NAN, CB_PARAM_RESTITUTION, "NaN R, averaged lean path");
+    expect(cb_preload_restitution_seconds(5e-5f, 5000.0f, 1.0f, 1.0f, 0.5f, &seconds), CB_ERR_OUT_OF_RANGE, CB_PARAM_RESTITUTION, "R = 1, averaged lean path");
+    expect(cb_preload_restitution_seconds(0.0f, 5000.0f, 1.0f, 0.7f, 0.5f, &seconds), CB_ERR_NOT_POSITIVE, CB_PARAM_MASS, "zero mass, averaged lean path");
     expect(cb_seconds_to_ticks(-1.0f, 1.5f, 0.0f, 1e-5f, &ticks), CB_ERR_NEGATIVE, CB_PARAM_TIME, "negative seconds");
     expect(cb_seconds_to_ticks(1e-3f, 1.5f, 0.0f, 1e-5f, NULL), CB_ERR_NULL, CB_PARAM_POINTER, "NULL ticks, seconds");
 

@@ -68,10 +68,26 @@ static inline void tb1v_line(put_line put, uint32_t index) {
     prediction_line(put, index, "tb1v", r, &p);
 }
 
-/* Every tier and the lean path on one switch of SWITCHES. */
+/* The lean averaged path on a switch (restitution alone: its damping left out), its preload force
+ * -offset * stiffness: "switch S restitution-averaged end_ns N ticks K" (or the error). */
+static inline void restitution_line(put_line put, uint32_t index) {
+    const cb_switch *s = &SWITCHES[index];
+    float seconds = 0.0f;
+    cb_error r = cb_preload_restitution_seconds(s->mass, s->stiffness, -s->offset * s->stiffness,
+                                                s->restitution, s->closing_speed, &seconds);
+    cb_prediction p = {0};
+    if (r == CB_OK) {
+        p.end_time = seconds;
+        p.flags = CB_HAS_END;
+    }
+    prediction_line(put, index, "restitution-averaged", r, &p);
+}
+
+/* Every tier and the lean paths on one switch of SWITCHES. */
 static inline void switch_lines(put_line put, uint32_t i) {
     cb_prediction p;
     tb1v_line(put, i);
+    restitution_line(put, i);
     prediction_line(put, i, "closed", cb_predict_closed(&SWITCHES[i], &p), &p);
     prediction_line(put, i, "averaged", cb_predict_averaged(&SWITCHES[i], &p), &p);
     prediction_line(put, i, "map", cb_predict_map(&SWITCHES[i], &p), &p);

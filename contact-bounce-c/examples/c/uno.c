@@ -1,5 +1,6 @@
-/* The C API on an Arduino Uno (ATmega328P), in C: the lean path (t_b1v from a preload's
- * inputs) for the switches of switches.h and the debouncer, printed over the UART. (A tier
+/* The C API on an Arduino Uno (ATmega328P), in C: the lean paths (t_b1v, and the averaged
+ * restitution-only time, from a preload's inputs) for the switches of switches.h and the
+ * debouncer, printed over the UART. (A tier
  * through this API does not fit: built with -DWITH_CLOSED_TIER, scripts/c-api.sh prints how far
  * the closed tier overflows the 32 KB.) scripts/c-api.sh builds it with avr-gcc
  * against libcontact_bounce_c.a, runs it in simavr and compares its lines with the Rust core's
@@ -31,6 +32,7 @@ int main(void) {
     uart_init();
     for (uint32_t i = 0; i < SWITCH_COUNT; i++) {
         tb1v_line(uart_put, i);
+        restitution_line(uart_put, i);
 #ifdef WITH_CLOSED_TIER /* scripts/c-api.sh measures this one: it does not fit */
         cb_prediction p;
         prediction_line(uart_put, i, "closed", cb_predict_closed(&SWITCHES[i], &p), &p);
