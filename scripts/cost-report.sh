@@ -182,8 +182,9 @@ if [ "$uno" = 1 ]; then
     echo "## Exact cycles on the Arduino Uno (libsimavr, 16 MHz, tactile dome in f32)"
     echo
     echo "Cycles between consecutive calls of \`cost_mark\` in \`examples/uno_cost.rs\`. The map's full"
-    echo "prediction, the closed, averaged and exact tiers do not fit the Uno beside the rest (sizes above):"
-    echo "on the Uno, walk the map with \`MapImpacts\` or fix the window at compile time."
+    echo "prediction, the closed, averaged and exact tiers do not fit the Uno beside the rest (sizes above;"
+    echo "alone, every tier but the exact one and Auto fits: \"One firmware per tier\" below): on the Uno,"
+    echo "walk the map with \`MapImpacts\`, take a lean path, or fix the window at compile time."
     echo
     echo "| validate scene | map walk + Zeno tail | debouncer (ours), per sample | debouncr, per sample | learner, per sample | idle: ours / learner, per sample |"
     echo "|---:|---:|---:|---:|---:|---:|"

@@ -1,8 +1,19 @@
-//! The table mode's command line: `bounce-table [OPTIONS] [SCENE_FILE]` (the subcommands parse
-//! their own: `eval::options`, `replay::options`, `calibrate::options`).
+//! The command line, declared once (clap): the table mode, `bounce-table [OPTIONS]
+//! [SCENE_FILE]`, and the subcommands `eval`, `replay` and `calibrate`, each parsed into its
+//! mode's options. Every subcommand takes `-h`/`--help`, `-V`/`--version` and `--option=value`;
+//! a refused command line is one line (control characters escaped) naming what is wrong.
+
+use clap::error::ErrorKind;
+use clap::{Args, Parser, Subcommand};
 
 use crate::analysis::Settings;
+use crate::calibrate::{self, Format as CaptureFormat};
+use crate::capture::Polarity;
+use crate::eval::{self, EvalMethod, Precision};
 use crate::output::Format;
+use crate::priors::{self, Prior};
+use crate::replay;
+use contact_bounce::Nodes;
 
 /// The most worker threads `--threads` takes: each is a stack, and a run asks for no more
 /// than its work can use.
@@ -10,6 +21,9 @@ pub const MAX_THREADS: u64 = 1024;
 /// At most this many Monte Carlo samples: each keeps 16 bytes of results, so a run takes at
 /// most 1.6 GB (and minutes), not an allocation the system refuses.
 pub const MAX_SAMPLES: u64 = 100_000_000;
+
+/// The help's layout: the usage first, then what the command does and its options.
+const TEMPLATE: &str = "usage: {usage}\n\n{about-with-newline}\n{all-args}{after-help}";
 
 /// The table mode's options (`bounce-table [OPTIONS] [SCENE_FILE]`).
 #[derive(Debug, Clone)]
@@ -26,92 +40,614 @@ pub struct Options {
     pub file: Option<String>,
 }
 
-fn positive(name: &str, value: &str) -> Result<f64, String> {
-    value
-        .parse::<f64>()
-        .ok()
-        .filter(|x| x.is_finite() && *x > 0.0)
-        .ok_or(format!("{name}: '{value}' is not a positive number"))
+/// What a command line asks for.
+#[derive(Debug, Clone)]
+pub enum Invocation {
+    /// The table mode.
+    Table(Options),
+    /// `eval`.
+    Eval(eval::Options),
+    /// `replay`.
+    Replay(replay::Request),
+    /// `calibrate`.
+    Calibrate(calibrate::Options),
+    /// `--help`: the text to print.
+    Help(String),
+    /// `--version`.
+    Version,
 }
 
-/// Parses the table mode's arguments.
+/// A refused command line.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Refusal {
+    /// The subcommand refused (`None`: the table mode).
+    pub subcommand: Option<&'static str>,
+    /// What is wrong, in one line.
+    pub message: String,
+}
+
+impl std::fmt::Display for Refusal {
+    /// The message and where the usage is, as `bounce-table` prints them (two lines).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let command = match self.subcommand {
+            Some(name) => format!("bounce-table {name}"),
+            None => "bounce-table".to_owned(),
+        };
+        write!(
+            f,
+            "{command}: {}\n({command} --help shows its usage)",
+            self.message
+        )
+    }
+}
+
+/// Parses the arguments after the program's name.
 ///
 /// # Errors
-/// A one-line message naming the option at fault.
-pub fn parse(args: &[String]) -> Result<Options, String> {
-    // Arguments echoed in a message have their control characters escaped: one line.
-    parse_unescaped(args).map_err(|m| crate::strict::printable(&m).into_owned())
-}
-
-fn parse_unescaped(args: &[String]) -> Result<Options, String> {
-    let mut o = Options {
-        settings: Settings::default(),
-        format: Format::Table,
-        output: None,
-        plot: None,
-        file: None,
+/// A [`Refusal`]: an unknown option, a missing or bad value, a missing or extra file.
+pub fn parse<I, S>(args: I) -> Result<Invocation, Refusal>
+where
+    I: IntoIterator<Item = S>,
+    S: Into<String>,
+{
+    let args: Vec<String> = args.into_iter().map(Into::into).collect();
+    let subcommand = match args.first().map(String::as_str) {
+        Some("eval") => Some("eval"),
+        Some("replay") => Some("replay"),
+        Some("calibrate") => Some("calibrate"),
+        _ => None,
     };
-    o.settings.progress = std::io::IsTerminal::is_terminal(&std::io::stderr());
-    let mut it = args.iter();
-    while let Some(arg) = it.next() {
-        let mut value = |name: &str| it.next().cloned().ok_or(format!("{name} needs a value"));
-        match arg.as_str() {
-            "--period" | "--sample-period" => {
-                o.settings.period = positive("--period", &value("--period")?)?
-            }
-            "--tolerance" => {
-                o.settings.tolerance = positive("--tolerance", &value("--tolerance")?)?
-            }
-            "--margin" => {
-                let m = positive("--margin", &value("--margin")?)?;
-                if m < 1.0 {
-                    return Err(format!(
-                        "--margin: {m} is below 1 (a factor the window is multiplied by)"
-                    ));
-                }
-                o.settings.margin = m;
-            }
-            "--percentile" => {
-                let p = positive("--percentile", &value("--percentile")?)?;
-                if p > 100.0 {
-                    return Err(format!("--percentile: {p} is above 100"));
-                }
-                o.settings.percentile = p;
-            }
-            "--samples" | "--seed" | "--threads" => {
-                let v = value(arg)?;
-                let n = v
-                    .parse::<u64>()
-                    .ok()
-                    .filter(|n| *n > 0 || arg == "--seed")
-                    .ok_or(format!("{arg}: '{v}' is not a whole number above 0"))?;
-                match arg.as_str() {
-                    "--samples" if n > MAX_SAMPLES => {
-                        return Err(format!("--samples: {n} is above {MAX_SAMPLES}"))
-                    }
-                    "--samples" => o.settings.samples = n,
-                    "--seed" => o.settings.seed = n,
-                    _ if n > MAX_THREADS => {
-                        return Err(format!("--threads: {n} is above {MAX_THREADS}"))
-                    }
-                    _ => o.settings.threads = usize::try_from(n).unwrap_or(1),
-                }
-            }
-            "--format" => {
-                let v = value("--format")?;
-                o.format = Format::parse(&v).ok_or(format!(
-                    "--format: '{v}' is not table, markdown, csv, json, c or rust"
-                ))?;
-            }
-            "--output" => o.output = Some(value("--output")?),
-            "--plot" => o.plot = Some(value("--plot")?),
-            other if other.starts_with('-') => return Err(format!("unknown option '{other}'")),
-            file => {
-                if o.file.replace(file.to_owned()).is_some() {
-                    return Err("give one scene file".to_owned());
-                }
+    let refuse = |message: String| Refusal {
+        subcommand,
+        message: crate::strict::printable(&message).into_owned(),
+    };
+    let cli = match Cli::try_parse_from(std::iter::once("bounce-table".to_owned()).chain(args)) {
+        Ok(cli) => cli,
+        Err(e) => {
+            return match e.kind() {
+                ErrorKind::DisplayHelp => Ok(Invocation::Help(e.render().to_string())),
+                ErrorKind::DisplayVersion => Ok(Invocation::Version),
+                _ => Err(refuse(one_line(&e))),
             }
         }
+    };
+    match cli.command {
+        None => Ok(Invocation::Table(cli.table.into_options())),
+        Some(Command::Eval(a)) => Ok(Invocation::Eval(eval::Options {
+            method: a.method,
+            tolerance: a.tolerance,
+            precision: a.precision,
+            nodes: a.nodes,
+            file: a.file,
+        })),
+        Some(Command::Replay(a)) => Ok(Invocation::Replay(replay::Request {
+            capture: a.capture.into_options().map_err(refuse)?,
+            settings: replay::Settings {
+                period: a.period,
+                split: a.split,
+                time_scale: a.time_scale,
+                switch_type: a.switch_type,
+            },
+            output: a.format,
+            plot: a.plot,
+        })),
+        Some(Command::Calibrate(a)) => {
+            let mut options = a.capture.into_options().map_err(refuse)?;
+            (options.export, options.events) = match a.format {
+                Written::Report => (None, false),
+                Written::C => (Some(false), false),
+                Written::Rust => (Some(true), false),
+                Written::Events => (None, true),
+            };
+            options.output = a.output;
+            options.plot = a.plot;
+            options.contact_models = a.contact_models;
+            Ok(Invocation::Calibrate(options))
+        }
     }
-    Ok(o)
+}
+
+/// clap's error as one line: its message, without the tips and the usage that follow it (an
+/// argument's own control characters are escaped by the caller).
+fn one_line(e: &clap::Error) -> String {
+    let text = e.render().to_string();
+    let message = text.strip_prefix("error: ").unwrap_or(&text);
+    let first = message.split("\n\n").next().unwrap_or(message).trim_end();
+    // clap continues its own lines with an indent (the possible values).
+    first.replace("\n  ", " ")
+}
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "bounce-table",
+    version,
+    propagate_version = true,
+    about = "Predicted bounce and debounce windows for the catalogue's switches or yours",
+    long_about = TABLE_ABOUT,
+    after_help = SCENE_KEYS,
+    help_template = TEMPLATE,
+    args_conflicts_with_subcommands = true,
+    args_override_self = true,
+    allow_negative_numbers = true,
+    disable_help_subcommand = true
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+    #[command(flatten)]
+    table: TableArgs,
+}
+
+const TABLE_ABOUT: &str = "Prints predicted bounce and debounce windows: for the built-in catalogue of typical switches
+(assumed values over assumed ranges, not a datasheet; windows the P99.9 over the ranges), or for the switches of SCENE_FILE
+(.toml with [[switch]] tables, .json, or .jsonl; the keys of `eval`, and any number may be a
+range: {min = a, max = b} or {value = x, spread = s}).";
+
+const SCENE_KEYS: &str =
+    "Scene keys (SI units; where to get each: docs/parameters.md in the repository):
+  omega, or mass and stiffness    the natural frequency sqrt(stiffness / mass) (rad/s; kg, N/m)
+  gap or preload_force            where the stop is: gap > 0 m, the contacts apart at rest;
+                                  preload_force > 0 N, the spring presses them together
+                                  (Delta = -preload_force / stiffness < 0)
+  restitution                     R, the share of speed an impact keeps, in (0, 1]
+  closing_speed                   the speed at first contact (m/s)
+  damping_ratio                   viscous zeta (0 when absent)
+  threshold_impulse, threshold_fraction
+                                  where an endless bounce counts as ended
+  kernel = {kappa, tau, state}, two_body = {m1, c1, d1, m2, c2, d2, x2, v2}
+                                  a relaxation kernel; two bodies (the paper's Eq. 1)";
+
+/// The table mode's arguments.
+#[derive(Args, Debug)]
+struct TableArgs {
+    /// Tick period of the windows (s)
+    #[arg(long, visible_alias = "sample-period", value_name = "SECONDS", default_value_t = 1e-4, value_parser = positive)]
+    period: f64,
+    /// table, markdown, csv, json, c (a header) or rust (constants)
+    #[arg(long, value_name = "FORMAT", default_value = "table", value_parser = table_format)]
+    format: Format,
+    /// Write there, completely or not at all (default: standard output)
+    #[arg(long, value_name = "FILE")]
+    output: Option<String>,
+    /// Relative error asked of the model, else the exact reference
+    #[arg(long, value_name = "X", default_value_t = 0.1, value_parser = positive)]
+    tolerance: f64,
+    /// Percentile of the Monte Carlo window with ranges
+    #[arg(long, value_name = "P", default_value_t = 99.9, value_parser = percentile)]
+    percentile: f64,
+    /// Safety factor on every window, at least 1 (1: none; 1.5 for +50 %)
+    #[arg(long, value_name = "F", default_value_t = 1.0, value_parser = margin)]
+    margin: f64,
+    /// Monte Carlo samples (at most 1e8)
+    #[arg(long, value_name = "N", default_value_t = 4000, value_parser = samples)]
+    samples: u64,
+    /// Monte Carlo seed
+    #[arg(long, value_name = "S", default_value_t = 1, value_parser = whole)]
+    seed: u64,
+    /// Worker threads (default: all cores; at most 1024)
+    #[arg(long, value_name = "N", value_parser = threads)]
+    threads: Option<usize>,
+    /// Also write NAME-envelope.svg and NAME-motion.svg for each switch there
+    #[arg(long, value_name = "DIR")]
+    plot: Option<String>,
+    /// The scene file (default: the built-in catalogue)
+    #[arg(value_name = "SCENE_FILE")]
+    file: Option<String>,
+}
+
+impl TableArgs {
+    fn into_options(self) -> Options {
+        let mut settings = Settings {
+            period: self.period,
+            tolerance: self.tolerance,
+            percentile: self.percentile,
+            samples: self.samples,
+            seed: self.seed,
+            margin: self.margin,
+            ..Settings::default()
+        };
+        if let Some(threads) = self.threads {
+            settings.threads = threads;
+        }
+        settings.progress = std::io::IsTerminal::is_terminal(&std::io::stderr());
+        Options {
+            settings,
+            format: self.format,
+            output: self.output,
+            plot: self.plot,
+            file: self.file,
+        }
+    }
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    #[command(
+        about = "The model and the exact reference on JSON Lines scenes, one JSON result a line",
+        long_about = EVAL_ABOUT,
+        help_template = TEMPLATE,
+        args_override_self = true,
+        allow_negative_numbers = true
+    )]
+    Eval(EvalArgs),
+    #[command(
+        about = "Debouncers (ours and the peers') replayed on a real capture: false edges and latency",
+        long_about = REPLAY_ABOUT,
+        help_template = TEMPLATE,
+        args_override_self = true,
+        allow_negative_numbers = true
+    )]
+    Replay(ReplayArgs),
+    #[command(
+        about = "A capture of a real switch described, fitted and turned into windows",
+        long_about = CALIBRATE_ABOUT,
+        help_template = TEMPLATE,
+        args_override_self = true,
+        allow_negative_numbers = true
+    )]
+    Calibrate(CalibrateArgs),
+}
+
+const EVAL_ABOUT: &str = "eval: JSON Lines scenes (the scene keys of `bounce-table --help`; a file, else standard
+input), one JSON result a line on standard output: the regime, the end of the bounce, the last impact above the threshold,
+impact counts and the tier's expected error. A bad line gets an error object naming the line
+and the field; the other lines still run, and the exit status is 1 if any line failed.";
+
+/// `eval`'s arguments.
+#[derive(Args, Debug)]
+struct EvalArgs {
+    /// exact (the host's exact reference), exact-tier (the core's exact tier), map, averaged,
+    /// closed or auto
+    #[arg(long, value_name = "M", default_value = "auto", value_parser = method)]
+    method: EvalMethod,
+    /// The relative error auto must promise
+    #[arg(long, value_name = "X", default_value_t = 0.01, value_parser = positive)]
+    tolerance: f64,
+    /// f32 or f64, for the core's tiers
+    #[arg(long, value_name = "P", default_value = "f64", value_parser = precision)]
+    precision: Precision,
+    /// Gauss-Legendre nodes per panel of the averaged tier
+    #[arg(long, value_name = "N", default_value = "8", value_parser = nodes)]
+    nodes: Nodes,
+    /// The JSON Lines scenes (default: standard input)
+    #[arg(value_name = "SCENES")]
+    file: Option<String>,
+}
+
+const REPLAY_ABOUT: &str =
+    "replay: the benchmark of debouncers on a real capture. Per switch and kind, the earlier tests
+(--split) calibrate and the later ones are replayed through our debouncer with the
+calibrated windows (hold-off and confirm), with the switch type's prior window (physics-prior:
+the type from the switch's name or --switch-type), with the learning debouncer (learned: from
+that prior, it learns online through every test of the switch in capture order and is scored on
+the later ones), and through peers re-implemented from their documentation at their defaults
+(QMK, ZMK, Bounce2, debouncr, Linux and Zephyr gpio-keys). Rows: false edges (reported edges
+beyond each test's one) and latency P50/P99 from the first contact change.";
+
+/// `replay`'s arguments.
+#[derive(Args, Debug)]
+struct ReplayArgs {
+    /// table (markdown), json (one object a row), or curve: the learner's window and false
+    /// edges after every test (CSV)
+    #[arg(long, value_name = "F", default_value = "table", value_parser = replay_format)]
+    format: replay::Output,
+    /// Seconds between samples of the polled debouncers
+    #[arg(long, value_name = "S", default_value_t = 1e-3, value_parser = positive)]
+    period: f64,
+    /// The earlier share of the tests that calibrates, below 1
+    #[arg(long, value_name = "F", default_value_t = 0.5, value_parser = split)]
+    split: f64,
+    /// Every time multiplied by X (10: contactor-like, 0.1: reed-like)
+    #[arg(long, value_name = "X", default_value_t = 1.0, value_parser = positive)]
+    time_scale: f64,
+    /// push-button, rocker, toggle, slide, tactile or hand-operated
+    #[arg(long, value_name = "TYPE", value_parser = switch_type)]
+    switch_type: Option<&'static Prior>,
+    /// Also write SWITCH-KIND-replay.svg there: false edges against latency
+    #[arg(long, value_name = "DIR")]
+    plot: Option<String>,
+    #[command(flatten)]
+    capture: CaptureArgs,
+}
+
+const CALIBRATE_ABOUT: &str =
+    "calibrate: describes a capture (JSON Lines of the bouncy-button format, a CSV of `time,level`
+rows, or a VCD; format from the extension) per switch and kind (bounce P50/P90/P99/max,
+transitions, resolved flights and dwells, chatter), fits the impact model and a bounce model
+with empirical terms (clean share, log-normal bursts, late bursts), checks them and the
+empirical quantiles on held-out halves, and recommends windows. High = open unless
+--active-high.";
+
+/// `calibrate`'s arguments.
+#[derive(Args, Debug)]
+struct CalibrateArgs {
+    /// report; c or rust: only the windows, as #defines or Rust constants (ns); csv: each
+    /// event's description, one row per event
+    #[arg(long, value_name = "F", default_value = "report", value_parser = written)]
+    format: Written,
+    /// Write there, completely or not at all (default: standard output)
+    #[arg(long, value_name = "FILE")]
+    output: Option<String>,
+    /// Also fit the two-body and compliant-contact models to each switch's presses and check
+    /// them on held-out halves (about a minute)
+    #[arg(long)]
+    contact_models: bool,
+    /// Also write SWITCH-KIND.svg there: observed bounce distribution vs the models
+    #[arg(long, value_name = "DIR")]
+    plot: Option<String>,
+    #[command(flatten)]
+    capture: CaptureArgs,
+}
+
+/// What `calibrate` writes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Written {
+    Report,
+    C,
+    Rust,
+    Events,
+}
+
+/// The capture and how to read and calibrate it (`calibrate`'s, and `replay`'s).
+#[derive(Args, Debug)]
+struct CaptureArgs {
+    /// jsonl, csv or vcd (default: from the file's extension)
+    #[arg(long, value_name = "F", value_parser = capture_format)]
+    capture_format: Option<CaptureFormat>,
+    /// Intervals shorter than S are chatter, not timed
+    #[arg(long, value_name = "S", default_value_t = 3e-6, value_parser = seconds)]
+    resolution: f64,
+    /// A quiet interval of S ends a burst; later bursts are late bounce
+    #[arg(long, value_name = "S", default_value_t = 5e-3, value_parser = seconds)]
+    burst_gap: f64,
+    /// In CSV/VCD streams, a gap longer than S starts a new event
+    #[arg(long, value_name = "S", default_value_t = 0.2, value_parser = seconds)]
+    quiet: f64,
+    /// The VCD signal (default: the only 1-bit one)
+    #[arg(long, value_name = "NAME")]
+    signal: Option<String>,
+    /// The contacts are closed when the level is high
+    #[arg(long)]
+    active_high: bool,
+    /// Leave out a JSON Lines section (repeatable)
+    #[arg(long, value_name = "NAME")]
+    skip_section: Vec<String>,
+    /// The windows' percentile of the bounce
+    #[arg(long, value_name = "P", default_value_t = 99.0, value_parser = percentile)]
+    percentile: f64,
+    /// The random held-out split's seed
+    #[arg(long, value_name = "N", default_value_t = 1, value_parser = whole)]
+    seed: u64,
+    /// The capture
+    #[arg(value_name = "CAPTURE")]
+    file: String,
+}
+
+impl CaptureArgs {
+    /// `calibrate`'s options for this capture (what is written left at the report).
+    fn into_options(self) -> Result<calibrate::Options, String> {
+        let format = match self.capture_format {
+            Some(f) => f,
+            None => match self.file.rsplit('.').next() {
+                Some("jsonl") => CaptureFormat::Jsonl,
+                Some("csv") => CaptureFormat::Csv,
+                Some("vcd") => CaptureFormat::Vcd,
+                _ => return Err(format!("{}: say --capture-format jsonl|csv|vcd", self.file)),
+            },
+        };
+        Ok(calibrate::Options {
+            file: self.file,
+            format,
+            resolution: self.resolution,
+            burst_gap: self.burst_gap,
+            quiet: self.quiet,
+            signal: self.signal,
+            polarity: if self.active_high {
+                Polarity::ActiveHigh
+            } else {
+                Polarity::ActiveLow
+            },
+            skip_sections: self.skip_section,
+            percentile: self.percentile / 100.0,
+            seed: self.seed,
+            export: None,
+            output: None,
+            plot: None,
+            events: false,
+            contact_models: false,
+        })
+    }
+}
+
+// The values' parsers: each names what it takes (clap adds the option and the value).
+
+fn positive(v: &str) -> Result<f64, String> {
+    v.parse::<f64>()
+        .ok()
+        .filter(|x| x.is_finite() && *x > 0.0)
+        .ok_or_else(|| "not a positive number".to_owned())
+}
+
+fn seconds(v: &str) -> Result<f64, String> {
+    positive(v).map_err(|_| "not a positive number of seconds".to_owned())
+}
+
+fn margin(v: &str) -> Result<f64, String> {
+    let m = positive(v)?;
+    if m < 1.0 {
+        return Err(format!(
+            "{m} is below 1 (a factor the window is multiplied by)"
+        ));
+    }
+    Ok(m)
+}
+
+fn percentile(v: &str) -> Result<f64, String> {
+    positive(v)
+        .ok()
+        .filter(|p| *p <= 100.0)
+        .ok_or_else(|| "not in (0, 100]".to_owned())
+}
+
+fn split(v: &str) -> Result<f64, String> {
+    let f = positive(v)?;
+    if f >= 1.0 {
+        return Err(format!(
+            "{f} leaves no later test to replay: give a share below 1"
+        ));
+    }
+    Ok(f)
+}
+
+fn whole(v: &str) -> Result<u64, String> {
+    v.parse::<u64>()
+        .map_err(|_| "not a whole number".to_owned())
+}
+
+fn samples(v: &str) -> Result<u64, String> {
+    match whole(v)? {
+        0 => Err("not a whole number above 0".to_owned()),
+        n if n > MAX_SAMPLES => Err(format!("{n} is above {MAX_SAMPLES}")),
+        n => Ok(n),
+    }
+}
+
+fn threads(v: &str) -> Result<usize, String> {
+    match whole(v)? {
+        0 => Err("not a whole number above 0".to_owned()),
+        n if n > MAX_THREADS => Err(format!("{n} is above {MAX_THREADS}")),
+        n => usize::try_from(n).map_err(|_| format!("{n} is above {MAX_THREADS}")),
+    }
+}
+
+fn table_format(v: &str) -> Result<Format, String> {
+    Format::parse(v).ok_or_else(|| "not table, markdown, csv, json, c or rust".to_owned())
+}
+
+fn method(v: &str) -> Result<EvalMethod, String> {
+    Ok(match v {
+        "exact" => EvalMethod::Exact,
+        "exact-tier" => EvalMethod::Tier,
+        "map" => EvalMethod::Map,
+        "averaged" => EvalMethod::Averaged,
+        "closed" => EvalMethod::Closed,
+        "auto" => EvalMethod::Auto,
+        _ => return Err("not one of exact, exact-tier, map, averaged, closed, auto".to_owned()),
+    })
+}
+
+fn precision(v: &str) -> Result<Precision, String> {
+    match v {
+        "f32" => Ok(Precision::F32),
+        "f64" => Ok(Precision::F64),
+        _ => Err("not f32 or f64".to_owned()),
+    }
+}
+
+fn nodes(v: &str) -> Result<Nodes, String> {
+    v.parse::<u32>()
+        .ok()
+        .and_then(Nodes::from_count)
+        .ok_or_else(|| "not one of 2, 4, 6, 8, 10, 12, 16, 20".to_owned())
+}
+
+fn replay_format(v: &str) -> Result<replay::Output, String> {
+    match v {
+        "table" | "markdown" => Ok(replay::Output::Markdown),
+        "json" => Ok(replay::Output::Json),
+        "curve" => Ok(replay::Output::Curve),
+        _ => Err("not table, markdown, json or curve".to_owned()),
+    }
+}
+
+fn switch_type(v: &str) -> Result<&'static Prior, String> {
+    priors::by_name(v).ok_or_else(|| {
+        let names: Vec<&str> = priors::TYPES.iter().map(|(n, _)| *n).collect();
+        format!("not one of {}", names.join(", "))
+    })
+}
+
+fn capture_format(v: &str) -> Result<CaptureFormat, String> {
+    match v {
+        "jsonl" => Ok(CaptureFormat::Jsonl),
+        "csv" => Ok(CaptureFormat::Csv),
+        "vcd" => Ok(CaptureFormat::Vcd),
+        _ => Err("not jsonl, csv or vcd".to_owned()),
+    }
+}
+
+fn written(v: &str) -> Result<Written, String> {
+    match v {
+        "report" | "markdown" => Ok(Written::Report),
+        "c" => Ok(Written::C),
+        "rust" => Ok(Written::Rust),
+        "csv" => Ok(Written::Events),
+        capture @ ("jsonl" | "vcd") => Err(format!(
+            "'{capture}' is a capture's format: --capture-format {capture}"
+        )),
+        _ => Err("not report, c, rust or csv (events)".to_owned()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn calibrate(args: &[&str]) -> Result<calibrate::Options, Refusal> {
+        match parse(std::iter::once("calibrate").chain(args.iter().copied()))? {
+            Invocation::Calibrate(o) => Ok(o),
+            other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn calibrates_options_have_stated_defaults_and_name_the_bad_one() {
+        let o = calibrate(&["capture.vcd"]).expect("valid");
+        assert_eq!(o.format, CaptureFormat::Vcd);
+        assert_eq!(
+            (o.resolution, o.burst_gap, o.quiet, o.percentile),
+            (3e-6, 5e-3, 0.2, 0.99)
+        );
+        let o =
+            calibrate(&["--burst-gap", "2e-2", "--percentile", "99.9", "c.csv"]).expect("valid");
+        assert_eq!((o.burst_gap, o.format), (2e-2, CaptureFormat::Csv));
+        assert!((o.percentile - 0.999).abs() < 1e-15);
+        let o = calibrate(&["--format=rust", "c.csv"]).expect("valid");
+        assert_eq!((o.export, o.events), (Some(true), false));
+        for (bad, named) in [
+            (&["--burst-gap", "0", "c.csv"][..], "--burst-gap"),
+            (&["--burst-gap", "NaN", "c.csv"], "--burst-gap"),
+            (&["--burst-gap"], "--burst-gap"),
+            (&["--resolution", "-1", "c.csv"], "--resolution"),
+            (&["--percentile", "0", "c.csv"], "--percentile"),
+            (&["--frobnicate", "c.csv"], "--frobnicate"),
+            (&["capture.bin"], "--capture-format"),
+            (&["--format", "java", "c.csv"], "--format"),
+            (&["--format", "vcd", "c.csv"], "--capture-format vcd"),
+            (&["--capture-format", "wav", "c.csv"], "--capture-format"),
+            (&["a.csv", "b.csv"], "b.csv"),
+            (&[], "CAPTURE"),
+        ] {
+            let e = calibrate(bad).expect_err("refused");
+            assert_eq!(e.subcommand, Some("calibrate"));
+            assert!(e.message.contains(named), "{bad:?}: {}", e.message);
+            assert!(!e.message.contains('\n'), "{bad:?}: {}", e.message);
+        }
+    }
+
+    #[test]
+    fn help_and_version_are_answers_not_refusals() {
+        for args in [&["--help"][..], &["eval", "-h"], &["calibrate", "--help"]] {
+            let Ok(Invocation::Help(text)) = parse(args.iter().copied()) else {
+                panic!("{args:?}")
+            };
+            assert!(text.starts_with("usage: bounce-table"), "{text}");
+        }
+        for args in [&["-V"][..], &["replay", "--version"], &["calibrate", "-V"]] {
+            assert!(matches!(
+                parse(args.iter().copied()),
+                Ok(Invocation::Version)
+            ));
+        }
+    }
 }

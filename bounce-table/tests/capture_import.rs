@@ -228,9 +228,10 @@ fn calibrate_speaks_format_and_output_like_every_subcommand() {
             && !summary.contains("e26"),
         "{summary}"
     );
-    // The older spelling gives the same windows.
+    // The older spelling (`--export c`) is gone: refused in one line, naming it.
     let old = run(&["--export", "c", &csv]);
-    assert_eq!(old.stdout, text.as_bytes());
+    assert_eq!(old.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&old.stderr).contains("'--export'"));
     // Events as CSV; the capture's format said with --capture-format.
     let events = run(&["--format", "csv", "--capture-format", "jsonl", &csv]);
     assert!(events.status.success());

@@ -15,6 +15,7 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 
 use bounce_table::analysis::{analyse, Settings};
 use bounce_table::capture::{read_csv, read_jsonl, read_vcd, CaptureError, Event, Polarity};
+use bounce_table::cli::{self, Invocation};
 use bounce_table::scenes::read;
 
 fn cases() -> usize {
@@ -293,11 +294,11 @@ fn eval_lines_evaluate_or_are_refused() {
         let line = mutate(&mut rng, lines[i % lines.len()]).replace('\n', " ");
         for method in ["closed", "map", "auto", "exact"] {
             for precision in ["f32", "f64"] {
-                let args: Vec<String> = ["--method", method, "--precision", precision]
-                    .iter()
-                    .map(|s| (*s).to_owned())
-                    .collect();
-                let options = bounce_table::eval::options(&args).expect("valid options");
+                let Ok(Invocation::Eval(options)) =
+                    cli::parse(["eval", "--method", method, "--precision", precision])
+                else {
+                    panic!("valid options")
+                };
                 match no_panic("eval", &line, || {
                     bounce_table::eval::evaluate(&line, 1, &options)
                 }) {
@@ -478,24 +479,28 @@ fn options_of_every_subcommand_parse_or_are_refused_in_one_line() {
             .map(|_| rng.pick(WORDS).to_owned())
             .collect();
         let input = format!("{args:?}");
+        // The table mode's arguments, and each subcommand's.
         let results = no_panic("options", &input, || {
-            [
-                bounce_table::cli::parse(&args).map(|o| {
-                    let s = o.settings;
-                    assert!(s.period.is_finite() && s.period > 0.0, "{input}");
-                    assert!(s.margin >= 1.0 && s.margin.is_finite(), "{input}");
-                    assert!(s.percentile > 0.0 && s.percentile <= 100.0, "{input}");
-                    assert!((1..=1024).contains(&s.threads), "{input}");
-                }),
-                bounce_table::eval::options(&args).map(|_| ()),
-                bounce_table::replay::options(&args).map(|_| ()),
-                bounce_table::calibrate::options(&args).map(|_| ()),
-            ]
+            [None, Some("eval"), Some("replay"), Some("calibrate")].map(|sub| {
+                let line = sub
+                    .map(str::to_owned)
+                    .into_iter()
+                    .chain(args.iter().cloned());
+                cli::parse(line).map(|invocation| {
+                    if let Invocation::Table(o) = invocation {
+                        let s = o.settings;
+                        assert!(s.period.is_finite() && s.period > 0.0, "{input}");
+                        assert!(s.margin >= 1.0 && s.margin.is_finite(), "{input}");
+                        assert!(s.percentile > 0.0 && s.percentile <= 100.0, "{input}");
+                        assert!((1..=1024).contains(&s.threads), "{input}");
+                    }
+                })
+            })
         });
         for r in results {
             match r {
                 Ok(()) => parsed += 1,
-                Err(message) => one_line(&message, &input),
+                Err(refusal) => one_line(&refusal.message, &input),
             }
         }
     }
