@@ -831,3 +831,17 @@ fn a_scene_whose_contacts_do_not_stay_closed_is_warned_of_never_silently_given_a
         }
     }
 }
+
+#[test]
+#[cfg(unix)]
+fn an_argument_that_is_not_utf8_is_refused_not_a_panic() {
+    use std::os::unix::ffi::OsStrExt;
+    // std::env::args() panics on such an argument; the tool reads them as OsStrings.
+    let out = Command::new(BIN)
+        .arg(std::ffi::OsStr::from_bytes(b"scenes-\xff.toml"))
+        .output()
+        .expect("run bounce-table");
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("is not UTF-8") && err.lines().count() == 1, "{err}");
+}
