@@ -843,5 +843,8 @@ fn an_argument_that_is_not_utf8_is_refused_not_a_panic() {
         .expect("run bounce-table");
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
-    assert!(err.contains("is not UTF-8") && err.lines().count() == 1, "{err}");
+    assert!(
+        err.contains("is not UTF-8") && err.lines().count() == 1,
+        "{err}"
+    );
 }
