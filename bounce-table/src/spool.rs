@@ -7,6 +7,7 @@
 //! directory refuses a file, the records stay in memory (compact: about 100 bytes a switch). Numbers are stored as
 //! their bits, so every value, infinities included, reads back exactly.
 
+use std::borrow::Cow;
 use std::fs::File;
 use std::io::{self, BufReader, BufWriter, Read, Seek, SeekFrom, Write};
 use std::path::PathBuf;
@@ -21,6 +22,11 @@ pub struct Spool {
     len: usize,
     /// Whether any analysis has sensitivities.
     sensitivity: bool,
+    /// The static names (regimes, tiers) met so far: a record holds their index, and reads
+    /// them back without an allocation.
+    names: Vec<&'static str>,
+    /// The record being written.
+    scratch: Vec<u8>,
 }
 
 /// Where the records are.
@@ -60,6 +66,8 @@ impl Spool {
             path,
             len: 0,
             sensitivity: false,
+            names: Vec::new(),
+            scratch: Vec::new(),
         }
     }
 
@@ -71,6 +79,8 @@ impl Spool {
             path: None,
             len: 0,
             sensitivity: false,
+            names: Vec::new(),
+            scratch: Vec::new(),
         }
     }
 
@@ -97,22 +107,22 @@ impl Spool {
     /// # Errors
     /// The write fails (a full disk).
     pub fn push(&mut self, a: &Analysis) -> io::Result<()> {
-        let w: &mut dyn Write = match &mut self.backing {
-            Backing::File(f) => f,
-            Backing::Memory(v) => v,
-        };
-        text(w, &a.name)?;
-        text(w, &a.nominal.regime)?;
-        text(w, &a.nominal.tier)?;
+        // The record is written whole behind its length, so that reading it back is one copy
+        // and the decoding works on a slice.
+        let mut w = std::mem::take(&mut self.scratch);
+        w.clear();
+        text(&mut w, &a.name)?;
+        self.name(&mut w, &a.nominal.regime)?;
+        self.name(&mut w, &a.nominal.tier)?;
         for x in [
             a.nominal.bounce,
             a.nominal.upper,
             a.nominal.expected_error,
             a.window,
         ] {
-            number(w, x)?;
+            number(&mut w, x)?;
         }
-        optional(w, a.nominal.impacts)?;
+        optional(&mut w, a.nominal.impacts)?;
         w.write_all(&a.ticks.to_le_bytes())?;
         match &a.monte_carlo {
             None => w.write_all(&[0])?,
@@ -121,7 +131,7 @@ impl Spool {
                 w.write_all(&m.samples.to_le_bytes())?;
                 w.write_all(&m.exact.to_le_bytes())?;
                 for x in [m.p50, m.window, m.max] {
-                    number(w, x)?;
+                    number(&mut w, x)?;
                 }
             }
         }
@@ -131,20 +141,50 @@ impl Spool {
                 .to_le_bytes(),
         )?;
         for s in &a.sensitivity {
-            text(w, &s.parameter)?;
-            number(w, s.elasticity)?;
-            number(w, s.contribution)?;
+            text(&mut w, &s.parameter)?;
+            number(&mut w, s.elasticity)?;
+            number(&mut w, s.contribution)?;
         }
         match &a.warning {
             None => w.write_all(&[0])?,
             Some(t) => {
                 w.write_all(&[1])?;
-                text(w, t)?;
+                text(&mut w, t)?;
             }
         }
+        let length = u32::try_from(w.len())
+            .map_err(|_| io::Error::new(io::ErrorKind::InvalidInput, "spool: a record too long"))?;
+        let out: &mut dyn Write = match &mut self.backing {
+            Backing::File(f) => f,
+            Backing::Memory(v) => v,
+        };
+        out.write_all(&length.to_le_bytes())?;
+        out.write_all(&w)?;
+        self.scratch = w;
         self.len += 1;
         self.sensitivity |= !a.sensitivity.is_empty();
         Ok(())
+    }
+
+    /// A regime's or tier's name: its index among the static names met so far (at most 255),
+    /// else its text.
+    #[allow(clippy::ptr_arg)] // whether the name is static is the point
+    fn name(&mut self, w: &mut Vec<u8>, name: &Cow<'static, str>) -> io::Result<()> {
+        if let Cow::Borrowed(s) = name {
+            let index = match self.names.iter().position(|n| n == s) {
+                Some(i) => Some(i),
+                None if self.names.len() < 255 => {
+                    self.names.push(s);
+                    Some(self.names.len() - 1)
+                }
+                None => None,
+            };
+            if let Some(i) = index.and_then(|i| u8::try_from(i).ok()) {
+                return w.write_all(&[1, i]);
+            }
+        }
+        w.write_all(&[0])?;
+        text(w, name)
     }
 
     /// Every analysis, in the order pushed. The spool can be read again afterwards.
@@ -164,6 +204,8 @@ impl Spool {
         Ok(Rows {
             reader,
             left: self.len,
+            record: Vec::new(),
+            names: &self.names,
         })
     }
 }
@@ -186,6 +228,9 @@ impl Drop for Spool {
 pub struct Rows<'a> {
     reader: Reader<'a>,
     left: usize,
+    /// The record being read (from a file).
+    record: Vec<u8>,
+    names: &'a [&'static str],
 }
 
 /// Where the records are read from: each its own type, so that a record's small reads are
@@ -204,9 +249,12 @@ impl Iterator for Rows<'_> {
             return None;
         }
         self.left -= 1;
+        let names = self.names;
         Some(match &mut self.reader {
-            Reader::File(r) => read_analysis(r),
-            Reader::Memory(r) => read_analysis(r),
+            Reader::File(r) => read_record(r, &mut self.record)
+                .and_then(|()| read_analysis(&mut self.record.as_slice(), names)),
+            Reader::Memory(r) => read_record(r, &mut self.record)
+                .and_then(|()| read_analysis(&mut self.record.as_slice(), names)),
         })
     }
 }
@@ -256,10 +304,31 @@ fn read_text(r: &mut impl Read) -> io::Result<String> {
     String::from_utf8(v).map_err(|e| io::Error::new(io::ErrorKind::InvalidData, e))
 }
 
-fn read_analysis(r: &mut impl Read) -> io::Result<Analysis> {
+/// The next record's bytes, behind their length, into `record`.
+fn read_record(r: &mut impl Read, record: &mut Vec<u8>) -> io::Result<()> {
+    let length = usize::try_from(u32::from_le_bytes(bytes(r)?))
+        .map_err(|_| io::Error::new(io::ErrorKind::InvalidData, "spool: a record too long"))?;
+    record.resize(length, 0);
+    r.read_exact(record)
+}
+
+/// A name written by [`Spool::name`].
+fn read_name(r: &mut impl Read, names: &[&'static str]) -> io::Result<Cow<'static, str>> {
+    if read_flag(r)? {
+        let [i] = bytes(r)?;
+        names
+            .get(usize::from(i))
+            .map(|n| Cow::Borrowed(*n))
+            .ok_or_else(|| io::Error::new(io::ErrorKind::InvalidData, "spool: an unknown name"))
+    } else {
+        read_text(r).map(Cow::Owned)
+    }
+}
+
+fn read_analysis(r: &mut impl Read, names: &[&'static str]) -> io::Result<Analysis> {
     let name = read_text(r)?;
-    let regime = read_text(r)?.into();
-    let tier = read_text(r)?.into();
+    let regime = read_name(r, names)?;
+    let tier = read_name(r, names)?;
     let [bounce, upper, expected_error, window] = [
         read_number(r)?,
         read_number(r)?,
@@ -329,7 +398,12 @@ mod tests {
                 upper: f64::INFINITY,
                 regime: "zeno_accumulation".into(),
                 impacts: with_spread.then_some(13.0),
-                tier: "map".into(),
+                // A static name is kept as its index, any other as its text.
+                tier: if with_spread {
+                    "map".into()
+                } else {
+                    Cow::Owned("a tier by name".to_owned())
+                },
                 expected_error: 0.004,
             },
             window: -0.0,
