@@ -256,9 +256,53 @@ pub trait Rows {
     fn rows(&mut self)
         -> std::io::Result<Box<dyn Iterator<Item = std::io::Result<Analysis>> + '_>>;
 
+    /// Every analysis, from the first, in blocks of at most `n` (empty at the end), each
+    /// decoded where it is rendered (on the rendering threads).
+    ///
+    /// # Errors
+    /// The analyses cannot be read.
+    fn blocks<'a>(&'a mut self, n: usize) -> std::io::Result<Blocks<'a>> {
+        let mut rows = self.rows()?;
+        Ok(Box::new(move || {
+            rows.by_ref()
+                .take(n)
+                .collect::<std::io::Result<Vec<Analysis>>>()
+                .map(Block::Decoded)
+        }))
+    }
+
     /// False only where no analysis has sensitivities (their lines need no pass then).
     fn any_sensitivity(&self) -> bool {
         true
+    }
+}
+
+/// The next block of analyses, each call.
+pub type Blocks<'a> = Box<dyn FnMut() -> std::io::Result<Block<'a>> + 'a>;
+
+/// A block of analyses to render.
+pub enum Block<'a> {
+    /// Decoded already.
+    Decoded(Vec<Analysis>),
+    /// A spool's records, decoded one by one by the threads that render them.
+    Records(crate::spool::Records<'a>),
+}
+
+impl Block<'_> {
+    fn len(&self) -> usize {
+        match self {
+            Self::Decoded(v) => v.len(),
+            Self::Records(r) => r.len(),
+        }
+    }
+
+    fn get(&self, i: usize) -> std::io::Result<std::borrow::Cow<'_, Analysis>> {
+        match self {
+            Self::Decoded(v) => v.get(i).map(std::borrow::Cow::Borrowed).ok_or_else(|| {
+                std::io::Error::new(std::io::ErrorKind::InvalidInput, "no such row")
+            }),
+            Self::Records(r) => r.get(i).map(std::borrow::Cow::Owned),
+        }
     }
 }
 
@@ -275,6 +319,11 @@ impl Rows for crate::spool::Spool {
         &mut self,
     ) -> std::io::Result<Box<dyn Iterator<Item = std::io::Result<Analysis>> + '_>> {
         Ok(Box::new(crate::spool::Spool::rows(self)?))
+    }
+
+    fn blocks<'a>(&'a mut self, n: usize) -> std::io::Result<Blocks<'a>> {
+        let mut rows = crate::spool::Spool::rows(self)?;
+        Ok(Box::new(move || rows.next_records(n).map(Block::Records)))
     }
 
     fn any_sensitivity(&self) -> bool {
@@ -647,12 +696,7 @@ fn write_rows(
     row: &(dyn Fn(&Analysis, usize) -> std::io::Result<String> + Sync),
 ) -> std::io::Result<bool> {
     const BLOCK: usize = 4096;
-    let mut rows = analyses.rows()?;
-    let mut read = || {
-        rows.by_ref()
-            .take(BLOCK)
-            .collect::<std::io::Result<Vec<Analysis>>>()
-    };
+    let mut read = analyses.blocks(BLOCK)?;
     let write = |out: &mut dyn Write, texts: Vec<std::io::Result<Vec<String>>>| {
         for part in texts {
             for text in part? {
@@ -662,17 +706,13 @@ fn write_rows(
         Ok::<(), std::io::Error>(())
     };
     let (mut block, mut first, mut formatted) = (read()?, 0, Vec::new());
-    let any = !block.is_empty();
-    while !block.is_empty() {
+    let any = block.len() > 0;
+    while block.len() > 0 {
         let workers = threads.clamp(1, block.len().div_ceil(256));
         let share = block.len().div_ceil(workers);
         let format_part = |k: usize| {
-            block
-                .iter()
-                .enumerate()
-                .skip(k * share)
-                .take(share)
-                .map(|(i, a)| row(a, first + i))
+            (k * share..block.len().min((k + 1) * share))
+                .map(|i| row(&*block.get(i)?, first + i))
                 .collect::<std::io::Result<Vec<String>>>()
         };
         let (texts, (written, next)) = crate::workers::each_while(workers, &format_part, || {

@@ -241,6 +241,69 @@ enum Reader<'a> {
     Memory(&'a [u8]),
 }
 
+/// Records read whole but not decoded: a block that threads decode (and render) in parallel,
+/// while the next block is read.
+pub struct Records<'a> {
+    bytes: Vec<u8>,
+    /// Where each record ends in `bytes`.
+    ends: Vec<usize>,
+    names: &'a [&'static str],
+}
+
+impl Records<'_> {
+    /// How many records it holds.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.ends.len()
+    }
+
+    /// True when it holds none.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.ends.is_empty()
+    }
+
+    /// Record `i`, decoded.
+    ///
+    /// # Errors
+    /// `i` is beyond the block, or the record is malformed.
+    pub fn get(&self, i: usize) -> io::Result<Analysis> {
+        let start = match i.checked_sub(1) {
+            Some(before) => self.ends.get(before).copied(),
+            None => Some(0),
+        };
+        let record = start
+            .zip(self.ends.get(i).copied())
+            .and_then(|(start, end)| self.bytes.get(start..end))
+            .ok_or_else(|| io::Error::new(io::ErrorKind::InvalidInput, "spool: no such record"))?;
+        read_analysis(&mut &record[..], self.names)
+    }
+}
+
+impl<'a> Rows<'a> {
+    /// The next `n` records (fewer at the end), read but not decoded.
+    ///
+    /// # Errors
+    /// The spool cannot be read.
+    pub fn next_records(&mut self, n: usize) -> io::Result<Records<'a>> {
+        let mut block = Records {
+            bytes: Vec::new(),
+            ends: Vec::new(),
+            names: self.names,
+        };
+        while block.ends.len() < n && self.left > 0 {
+            self.left -= 1;
+            match &mut self.reader {
+                Reader::File(r) => read_record(r, &mut self.record)?,
+                Reader::Memory(r) => read_record(r, &mut self.record)?,
+            }
+            block.bytes.extend_from_slice(&self.record);
+            block.ends.push(block.bytes.len());
+        }
+        Ok(block)
+    }
+}
+
 impl Iterator for Rows<'_> {
     type Item = io::Result<Analysis>;
 
@@ -452,6 +515,16 @@ mod tests {
                     assert_eq!(b.window.to_bits(), a.window.to_bits());
                 }
             }
+            // The same records in blocks, decoded one by one (as the rendering threads do).
+            let mut reader = spool.rows().expect("rows");
+            let block = reader.next_records(5).expect("records");
+            assert_eq!(block.len(), 2);
+            for (i, a) in rows.iter().enumerate() {
+                let b = block.get(i).expect("a record");
+                assert_eq!(format!("{b:?}"), format!("{a:?}"));
+            }
+            assert!(block.get(2).is_err());
+            assert!(reader.next_records(5).expect("the end").is_empty());
         }
     }
 }
