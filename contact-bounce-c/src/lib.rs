@@ -588,19 +588,26 @@ pub extern "C" fn cb_preload_bounce_seconds(
     closing_speed: f32,
     seconds: Option<&mut f32>,
 ) -> cb_error {
-    let Some(seconds) = seconds else {
+    seconds_into(seconds, || {
+        preload_viscous_bounce_seconds(
+            mass,
+            stiffness,
+            preload_force,
+            closing_speed,
+            restitution,
+            damping_ratio,
+        )
+    })
+}
+
+/// A lean path's time into `out` (NULL: an error, and nothing computed).
+fn seconds_into(out: Option<&mut f32>, time: impl FnOnce() -> Result<f32, Error>) -> cb_error {
+    let Some(out) = out else {
         return NULL;
     };
-    match preload_viscous_bounce_seconds(
-        mass,
-        stiffness,
-        preload_force,
-        closing_speed,
-        restitution,
-        damping_ratio,
-    ) {
+    match time() {
         Ok(t) => {
-            *seconds = t;
+            *out = t;
             OK
         }
         Err(e) => e.into(),
@@ -621,22 +628,15 @@ pub extern "C" fn cb_preload_restitution_seconds(
     closing_speed: f32,
     seconds: Option<&mut f32>,
 ) -> cb_error {
-    let Some(seconds) = seconds else {
-        return NULL;
-    };
-    match preload_restitution_bounce_seconds(
-        mass,
-        stiffness,
-        preload_force,
-        closing_speed,
-        restitution,
-    ) {
-        Ok(t) => {
-            *seconds = t;
-            OK
-        }
-        Err(e) => e.into(),
-    }
+    seconds_into(seconds, || {
+        preload_restitution_bounce_seconds(
+            mass,
+            stiffness,
+            preload_force,
+            closing_speed,
+            restitution,
+        )
+    })
 }
 
 /// How a debounce window is used.
