@@ -616,8 +616,9 @@ fn seconds_into(out: Option<&mut f32>, time: impl FnOnce() -> Result<f32, Error>
 
 /// The lean averaged path: a preloaded contact's bounce (s) under restitution alone, the averaged
 /// model's time in closed form, straight from its inputs, with no scene and no expected error,
-/// into `seconds` (within 1 % of the exact bounce for a first impulse up to the preload's scale,
-/// j0 <= 1; the averaged tier's expected error needs a scene). `preload_force` in N (> 0).
+/// into `seconds` (for a first impulse up to the preload's scale, j0 <= 1, long by at most 4.7 %
+/// at R = 0.05 and 1.7 % from R = 0.5; the averaged tier's expected error needs a scene).
+/// `preload_force` in N (> 0).
 #[allow(unsafe_code)]
 #[no_mangle]
 pub extern "C" fn cb_preload_restitution_seconds(
