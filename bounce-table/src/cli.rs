@@ -127,6 +127,7 @@ where
                 split: a.split,
                 time_scale: a.time_scale,
                 switch_type: a.switch_type,
+                fixed: a.window,
             },
             output: a.format,
             plot: a.plot,
@@ -346,6 +347,10 @@ struct ReplayArgs {
     /// Also write SWITCH-KIND-replay.svg there: false edges against latency
     #[arg(long, value_name = "DIR")]
     plot: Option<String>,
+    /// Also replay our debouncer with this window (s) for presses and releases, as it is (a
+    /// firmware's fixed window; repeatable)
+    #[arg(long, value_name = "S", value_parser = seconds)]
+    window: Vec<f64>,
     #[command(flatten)]
     capture: CaptureArgs,
 }

@@ -544,6 +544,9 @@ pub struct Settings {
     pub time_scale: f64,
     /// The switch type for the prior, where the switch's name gives none.
     pub switch_type: Option<&'static Prior>,
+    /// Windows (s, press and release alike) to replay our debouncer with as they are: a
+    /// firmware's fixed window checked against the capture.
+    pub fixed: Vec<f64>,
 }
 
 /// One line of the benchmark.
@@ -633,6 +636,13 @@ pub fn run(events: &[Event], c: &calibrate::Options, s: &Settings) -> Result<Vec
             rows.extend(ours("physics-prior", w, w, s.period, kind).ok_or_else(|| {
                 format!("{switch}: the prior's window does not fit {} samples of --period {}: sample less often", Windows::MAX_TICKS, s.period)
             })?);
+        }
+        for &w in &s.fixed {
+            rows.extend(
+                ours(&format!("fixed {}", time(w)), w, w, s.period, kind).ok_or_else(|| {
+                    format!("--window {w}: it does not fit {} samples of --period {}: sample less often", Windows::MAX_TICKS, s.period)
+                })?,
+            );
         }
         rows.extend(peers(s.period));
         for mut row in rows {

@@ -196,3 +196,44 @@ fn bad_captures_and_options_are_named() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("sample less often"));
 }
+
+#[test]
+fn a_fixed_window_is_replayed_as_it_is_in_both_modes() {
+    // Every press reopens from 6 to 12 ms: a 1 ms window lets the reopening through in
+    // hold-off mode (it reports the press, then the opening and the closing again: 2 false
+    // edges a test); 20 ms covers it. Releases are clean for both.
+    let path = write("fixed.jsonl", &capture("fixed", 20, 6e-3, 12e-3));
+    let r = rows(&[
+        "--format",
+        "json",
+        "--window",
+        "1e-3",
+        "--window=20e-3",
+        path.to_str().unwrap(),
+    ]);
+    let short = row(&r, "press", "fixed 1.000 ms hold-off");
+    assert_eq!(short["window_s"], 1e-3);
+    assert_eq!(short["false_edges"], 20, "{short}");
+    assert_eq!(
+        row(&r, "press", "fixed 20.000 ms hold-off")["false_edges"],
+        0
+    );
+    assert_eq!(
+        row(&r, "press", "fixed 20.000 ms confirm")["false_edges"],
+        0
+    );
+    assert_eq!(
+        row(&r, "release", "fixed 1.000 ms hold-off")["false_edges"],
+        0
+    );
+    // Not a positive number of seconds, or longer than the debouncer's counter: refused.
+    for (bad, named) in [("0", "--window"), ("1e3", "--window 1000")] {
+        let out = Command::new(BIN)
+            .args(["replay", "--window", bad, path.to_str().unwrap()])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2), "{bad}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(named), "{bad}: {err}");
+    }
+}
