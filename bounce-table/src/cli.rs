@@ -619,6 +619,22 @@ mod tests {
         assert!((o.percentile - 0.999).abs() < 1e-15);
         let o = calibrate(&["--format=rust", "c.csv"]).expect("valid");
         assert_eq!((o.export, o.events), (Some(true), false));
+        // A repeatable option keeps every value; any other, the last one given.
+        let o = calibrate(&[
+            "--skip-section",
+            "Fast",
+            "--skip-section=Slow",
+            "--seed",
+            "1",
+            "--seed",
+            "7",
+            "c.jsonl",
+        ])
+        .expect("valid");
+        assert_eq!(
+            (o.skip_sections.as_slice(), o.seed),
+            (&["Fast".to_owned(), "Slow".to_owned()][..], 7)
+        );
         for (bad, named) in [
             (&["--burst-gap", "0", "c.csv"][..], "--burst-gap"),
             (&["--burst-gap", "NaN", "c.csv"], "--burst-gap"),
