@@ -31,7 +31,9 @@
 //! - [`tiers`]: how to predict. [`Scene::predict`] with a [`Method`]: the closed forms
 //!   (nanoseconds), the averaged model, the per-impact map, the exact solution, or
 //!   [`Method::Auto`], the cheapest tier that promises a [`Tolerance`]. Each gives a
-//!   [`Prediction`] with its expected error.
+//!   [`Prediction`] with its expected error. The leanest firmware takes a preload's inputs
+//!   straight to a time, with no `Scene`: [`tiers::preload_viscous_bounce_seconds`] (t_b1v) and
+//!   [`tiers::preload_restitution_bounce_seconds`] (the averaged model with restitution alone).
 //! - [`window`]: from a prediction to a [`Window`] in ticks, widened by a [`Margin`]; also as
 //!   `const fn`, so a window can be fixed at compile time.
 //! - [`debounce`]: a [`Debouncer`] on such windows (2 bytes of [`State`] per pin, integer-only),
@@ -40,6 +42,11 @@
 //!   terms) for those who build on them.
 //!
 //! Every invalid input is an [`Error`] naming the [`Parameter`] and the [`Reason`].
+//!
+//! A window from the model covers the bounce of the impact model: the first flights of a
+//! contact. Real hand-operated switches also dwell, chatter and bounce again later, beyond it;
+//! for them, let a [`LearningDebouncer`] learn the switch, or set the window from a capture
+//! (`bounce-table calibrate` and `bounce-table replay` in the repository, `docs/replay.md`).
 //!
 //! # Features
 //!
