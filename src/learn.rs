@@ -26,7 +26,11 @@
 //!
 //! Every rule is in samples and ratios of samples: nothing depends on how long a sample is,
 //! so the same learner serves a reed (microseconds) and a contactor (a tenth of a second) at
-//! the sampling period each needs. A period change is [`Learned::rescale`]d.
+//! the sampling period each needs. A period change is [`Learned::rescale`]d. What it sees of one
+//! switch does depend on the period: sampled finer, short quiet gaps resolve into late bursts
+//! that coarser sampling merges into the first one. On the push button of `docs/replay.md`,
+//! sampled every 10 us, it counts three late bursts by its 12th release (one at 1 ms), trusts
+//! them, and lets 2 false edges through on 1 of 28 later releases before it widens.
 
 use embedded_hal::digital::InputPin;
 
