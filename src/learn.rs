@@ -18,19 +18,18 @@
 //! - It never goes below the longest bounce seen, and when a bounce outlasts the prior, the
 //!   window covers it times 3/2.
 //! - It widens at once: while the contact keeps changing, the event lasts until it has been
-//!   quiet for [`LATE_GAP`] times its first burst (at least [`LATE_GAP`] samples) past the
-//!   window; and when a bounce comes after that (the edge it gives is false), the contact
+//!   quiet for [`LATE_GAP`] times its first burst (at least [`LATE_GAP`] samples, and at least
+//!   the prior over [`LATE_GAP_PRIOR_SHARE`]) past the window; and when a bounce comes after that (the edge it gives is false), the contact
 //!   returns within that same quiet after the false event's watch: the event before it is then counted as a
 //!   late burst that lasted until then (up to the prior: a quick double tap looks the same),
 //!   which sends its kind's window back to the prior until [`LATE_EVIDENCE`] are seen.
 //!
 //! Every rule is in samples and ratios of samples: nothing depends on how long a sample is,
 //! so the same learner serves a reed (microseconds) and a contactor (a tenth of a second) at
-//! the sampling period each needs. A period change is [`Learned::rescale`]d. What it sees of one
-//! switch does depend on the period: sampled finer, short quiet gaps resolve into late bursts
-//! that coarser sampling merges into the first one. On the push button of `docs/replay.md`,
-//! sampled every 10 us, it counts three late bursts by its 12th release (one at 1 ms), trusts
-//! them, and lets 2 false edges through on 1 of 28 later releases before it widens.
+//! the sampling period each needs. A period change is [`Learned::rescale`]d. The prior's share
+//! in the late-burst gap keeps what counts as a late burst the same however finely one switch
+//! is sampled: without it, sampled every 10 us, the push button of `docs/replay.md` showed three
+//! late bursts by its 12th release (one at 1 ms), and the learner trusted them too early.
 
 use embedded_hal::digital::InputPin;
 
@@ -44,6 +43,10 @@ pub const LATE_EVIDENCE: u8 = 3;
 /// A quiet gap of at least this many times the first burst (and this many samples) before a
 /// change makes that change a late burst; the same quiet ends an event past its window.
 pub const LATE_GAP: u16 = 4;
+/// ... and of at least the kind's prior window over this: a floor in the switch's own time
+/// scale (the prior carries it), so that what counts as a late burst does not depend on how
+/// finely the contact is sampled (for the hand-operated prior, 157 ms / 32 = 4.9 ms).
+pub const LATE_GAP_PRIOR_SHARE: u16 = 32;
 
 /// What the learner has seen of one kind, in samples.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
@@ -345,6 +348,21 @@ impl LearningState {
         self.watch(closed, *prior)
     }
 
+    /// The quiet (samples) that makes a change a late burst and ends an event: [`LATE_GAP`]
+    /// times the first burst, at least [`LATE_GAP`] samples and the prior of the kind the
+    /// contact is in over [`LATE_GAP_PRIOR_SHARE`].
+    fn quiet(&self, prior: Windows) -> u16 {
+        let own = if self.is_closed() {
+            prior.press()
+        } else {
+            prior.release()
+        };
+        max(
+            LATE_GAP.saturating_mul(max(self.burst_end, 1)),
+            own / LATE_GAP_PRIOR_SHARE,
+        )
+    }
+
     /// [`LearningState::update`] while an edge is in progress or starts.
     #[inline(never)]
     fn watch(&mut self, closed: bool, prior: Windows) -> Option<Edge> {
@@ -357,7 +375,7 @@ impl LearningState {
         if self.flags & ACTIVE != 0 {
             self.since = self.since.saturating_add(1);
             if changed {
-                let quiet = LATE_GAP.saturating_mul(max(self.burst_end, 1));
+                let quiet = self.quiet(prior);
                 if self.flags & LATE == 0 && self.since - self.last >= quiet {
                     self.flags |= LATE;
                 }
@@ -366,7 +384,7 @@ impl LearningState {
                 }
                 self.last = self.since;
                 // Widen at once: quiet past the last change before the event ends.
-                let quiet = LATE_GAP.saturating_mul(max(self.burst_end, 1));
+                let quiet = self.quiet(prior);
                 self.guard = max(self.guard, self.last.saturating_add(quiet));
             }
             if self.since < self.guard {
@@ -386,7 +404,7 @@ impl LearningState {
         }
         // Until one quiet interval after the watch, a change is that event's late bounce
         // (below); after it, the idle path needs no count.
-        let quiet = LATE_GAP.saturating_mul(max(self.burst_end, 1));
+        let quiet = self.quiet(prior);
         let recent = self.flags & RECENT != 0 && self.since <= self.guard.saturating_add(quiet);
         if !recent {
             // No longer counted: `since` stays a lower bound of the time since the edge.
@@ -575,6 +593,44 @@ mod tests {
         let seen = key.learned().press.burst;
         assert!(seen >= 18, "{seen}");
         assert!(key.learned().windows(&p).0 > seen);
+    }
+
+    #[test]
+    fn what_counts_as_a_late_burst_does_not_depend_on_the_sampling_period() {
+        // Presses in time: chatter for 0.8 ms (the contact open 0.2-0.5 ms and 0.7-0.8 ms), and
+        // in half of them a burst open again from 8 to 9 ms. Sampled every 1 ms and every
+        // 10 us with the same 157 ms prior, the chatter is the first burst and only the 8 ms
+        // one is late: 3 late bursts in 6 presses at both periods. (Without the prior's share
+        // in the gap, the 10 us samples took the chatter's 0.2 ms gap for a late burst too: 6.)
+        let mut lates = [0_u8; 2];
+        for (slot, period) in [1e-3, 1e-5].into_iter().enumerate() {
+            let ticks = |t: f64| {
+                #[allow(
+                    clippy::cast_possible_truncation,
+                    clippy::cast_sign_loss,
+                    clippy::as_conversions
+                )]
+                let n = (t / period).round() as usize;
+                n
+            };
+            let p = prior(u16::try_from(ticks(157e-3)).unwrap_or(u16::MAX));
+            let mut key = LearningState::new(false);
+            for late_burst in [false, true, false, true, false, true] {
+                let mut samples = [true; 1000];
+                for (i, s) in samples.iter_mut().enumerate() {
+                    #[allow(clippy::cast_precision_loss, clippy::as_conversions)]
+                    let t = (i as f64 + 0.5) * period;
+                    let chatter = (0.2e-3..0.5e-3).contains(&t) || (0.7e-3..0.8e-3).contains(&t);
+                    *s = !(chatter || (late_burst && (8e-3..9e-3).contains(&t)));
+                }
+                let bounce = samples.get(..ticks(10e-3)).unwrap_or(&[]);
+                cycle(&mut key, p, bounce, ticks(200e-3));
+            }
+            if let Some(late) = lates.get_mut(slot) {
+                *late = key.learned().press.late;
+            }
+        }
+        assert_eq!(lates, [3, 3]);
     }
 
     #[test]
