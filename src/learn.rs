@@ -19,10 +19,11 @@
 //!   window covers it times 3/2.
 //! - It widens at once: while the contact keeps changing, the event lasts until it has been
 //!   quiet for [`LATE_GAP`] times its first burst (at least [`LATE_GAP`] samples, and at least
-//!   the prior over [`LATE_GAP_PRIOR_SHARE`]) past the window; and when a bounce comes after that (the edge it gives is false), the contact
-//!   returns within that same quiet after the false event's watch: the event before it is then counted as a
-//!   late burst that lasted until then (up to the prior: a quick double tap looks the same),
-//!   which sends its kind's window back to the prior until [`LATE_EVIDENCE`] are seen.
+//!   the prior over [`LATE_GAP_PRIOR_SHARE`]) past the window; and when a bounce comes after
+//!   that (the edge it gives is false), the contact returns within that same quiet after the
+//!   false event's watch: the event before it is then counted as a late burst that lasted
+//!   until then (up to the prior: a quick double tap looks the same), which sends its kind's
+//!   window back to the prior until [`LATE_EVIDENCE`] are seen.
 //!
 //! Every rule is in samples and ratios of samples: nothing depends on how long a sample is,
 //! so the same learner serves a reed (microseconds) and a contactor (a tenth of a second) at
@@ -43,9 +44,10 @@ pub const LATE_EVIDENCE: u8 = 3;
 /// A quiet gap of at least this many times the first burst (and this many samples) before a
 /// change makes that change a late burst; the same quiet ends an event past its window.
 pub const LATE_GAP: u16 = 4;
-/// ... and of at least the kind's prior window over this: a floor in the switch's own time
-/// scale (the prior carries it), so that what counts as a late burst does not depend on how
-/// finely the contact is sampled (for the hand-operated prior, 157 ms / 32 = 4.9 ms).
+/// The late-burst gap is also at least the kind's prior window over this: a floor in the
+/// switch's own time scale (the prior carries it), so that what counts as a late burst does not
+/// depend on how finely the contact is sampled (for the hand-operated prior, 157 ms / 32 =
+/// 4.9 ms).
 pub const LATE_GAP_PRIOR_SHARE: u16 = 32;
 
 /// What the learner has seen of one kind, in samples.
