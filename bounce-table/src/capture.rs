@@ -53,6 +53,9 @@ pub struct Event {
     pub kind: Kind,
     /// The times of the changes, nondecreasing, in seconds; the contact alternates at each.
     pub changes: Vec<f64>,
+    /// The part of the test protocol the event belongs to (the JSON Lines `section`: how the
+    /// switch was operated), where the capture says.
+    pub section: Option<String>,
 }
 
 /// A capture that cannot be read: the file, the line (1-based, 0 when it is the whole file)
@@ -134,6 +137,7 @@ fn event(switch: &str, closed_before: bool, changes: Vec<f64>) -> Event {
             Kind::Press
         },
         changes,
+        section: None,
     }
 }
 
@@ -638,6 +642,7 @@ pub fn read_jsonl(
             origin: format!("line {line}{test}"),
             kind,
             changes,
+            section: section.map(str::to_owned),
         });
     }
     Ok((events, skipped))
@@ -672,6 +677,8 @@ pub struct Description {
     /// A press only: the longest closed dwell of the first burst after which the contact
     /// opens again, as a share of the burst's longest resolved flight (see [`Hold`]).
     pub hold: Option<Hold>,
+    /// The event's [`Event::section`].
+    pub section: Option<String>,
 }
 
 /// The longest closed dwell inside a press's first burst. A Newton impact has no dwell at
@@ -734,6 +741,7 @@ impl Event {
             chatter_time,
             bursts,
             hold,
+            section: self.section.clone(),
         }
     }
 
@@ -798,6 +806,7 @@ mod tests {
             kind: Kind::Press,
             // closed 10 us, open 1 us (chatter), closed 20 us, open 30 us, closed.
             changes: vec![0.0, 10e-6, 11e-6, 31e-6, 61e-6],
+            section: None,
         };
         let d = e.describe(3e-6, 1.0);
         assert_eq!(d.transitions, 5);
@@ -819,6 +828,7 @@ mod tests {
             origin: String::new(),
             kind: Kind::Press,
             changes: vec![0.0, 5e-6, 105e-6, 107e-6, 147e-6, 447e-6, 467e-6],
+            section: None,
         };
         let h = e.describe(3e-6, 5e-3).hold.unwrap();
         assert!((h.at - 147e-6).abs() < 1e-12 && (h.dwell - 300e-6).abs() < 1e-12);
@@ -842,6 +852,7 @@ mod tests {
             // open 20 us, closed 10 us, open 5 ms (quiet), closed 30 us, open 2 ms (quiet),
             // closed 40 us, open.
             changes: vec![0.0, 20e-6, 30e-6, 5.03e-3, 5.06e-3, 7.06e-3, 7.1e-3],
+            section: None,
         };
         let d = e.describe(3e-6, 1e-3);
         assert_eq!(d.bursts, 3);
@@ -926,6 +937,7 @@ mod tests {
         assert_eq!(events.len(), 2);
         let events = drop_several_presses(events, 0.2, &mut skipped);
         assert_eq!(events.len(), 1);
+        assert_eq!(events[0].section.as_deref(), Some("Normal"));
         assert_eq!(
             (
                 skipped.marked_invalid,
@@ -953,6 +965,9 @@ mod tests {
         let line = r#"{"dataset":"d","kind":"press","events":[[0,0],[10,1]]}"#;
         let e = read_jsonl("f.jsonl", line, &[]).unwrap_err();
         assert!(e.reason.contains("starts closed"), "{e}");
+        // No `section`: the event has none.
+        let line = r#"{"dataset":"d","kind":"press","events":[[0,1],[10,0]]}"#;
+        assert_eq!(read_jsonl("f.jsonl", line, &[]).unwrap().0[0].section, None);
         let e = read_jsonl("f.jsonl", "{\n", &[]).unwrap_err();
         assert_eq!(e.line, 1);
     }

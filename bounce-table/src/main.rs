@@ -291,6 +291,7 @@ fn calibrate_main(options: &calibrate::Options) -> ExitCode {
             if skipped.total() > 0 {
                 report.push_str(&format!("\n{}\n", skipped.describe(options.quiet)));
             }
+            report.push_str(&calibrate::by_section(&groups));
             report.push_str(&calibrate::assess(
                 &groups,
                 options.percentile,

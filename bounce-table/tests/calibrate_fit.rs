@@ -51,6 +51,7 @@ fn press_with_dwell(restitution: f64, closing_speed: f64, start: f64, dwell: f64
         origin: String::new(),
         kind: Kind::Press,
         changes,
+        section: None,
     }
 }
 
@@ -115,6 +116,7 @@ fn flights_that_do_not_shrink_are_not_called_an_impact_model() {
             origin: String::new(),
             kind: Kind::Press,
             changes: changes.iter().map(|t| t + f64::from(i)).collect(),
+            section: None,
         })
         .collect();
     let groups = group(&events, 1e-6, GAP);
@@ -166,6 +168,7 @@ fn exported_windows_compile_as_c_and_rust() {
                 origin: format!("event {i}"),
                 kind: Kind::Press,
                 changes: vec![start, start + 1e11, start + 2e11, start + 3e11],
+                section: None,
             }
         })
         .collect();
@@ -296,6 +299,7 @@ fn the_fitted_model_recovers_a_known_mixture_of_clean_edges_bursts_and_late_burs
                 origin: String::new(),
                 kind: Kind::Press,
                 changes,
+                section: None,
             }
         })
         .collect();
@@ -349,6 +353,7 @@ fn a_bounce_shorter_than_the_resolution_is_fitted_with_the_clean_edges() {
             origin: String::new(),
             kind: Kind::Release,
             changes,
+            section: None,
         });
     }
     let groups = group(&events, 3e-6, GAP);
@@ -476,6 +481,7 @@ fn two_stage_press(start: f64, v0: f64, contact: f64, reopen: Option<(f64, f64)>
         origin: String::new(),
         kind: Kind::Press,
         changes,
+        section: None,
     }
 }
 
@@ -543,6 +549,7 @@ fn a_later_half_that_never_bounced_is_said_so_not_divided_by() {
         origin: format!("event {i}"),
         kind: Kind::Press,
         changes: vec![f64::from(i)],
+        section: None,
     }));
     let groups = group(&events, 1e-12, GAP);
     let text = bounce_table::calibrate::summary(&groups, 0.99, GAP);
@@ -550,5 +557,56 @@ fn a_later_half_that_never_bounced_is_said_so_not_divided_by() {
         text.contains("covers 10 of the 10 later presses, none of which bounced")
             && !text.contains("inf times"),
         "{text}"
+    );
+}
+
+#[test]
+fn the_bounce_is_counted_per_section_of_the_protocol() {
+    // Six releases in section "slow" (four clean, two bouncing once for 200 us), then four in
+    // section "fast" (one clean, three bouncing again 10 ms after a first burst: late bursts).
+    let release = |i: u32, section: &str, changes: Vec<f64>| Event {
+        switch: "synthetic".into(),
+        origin: format!("event {i}"),
+        kind: Kind::Release,
+        changes: changes.iter().map(|t| t + f64::from(i)).collect(),
+        section: Some(section.into()),
+    };
+    let mut events: Vec<Event> = (0..4).map(|i| release(i, "slow", vec![0.0])).collect();
+    events.extend((4..6).map(|i| release(i, "slow", vec![0.0, 1e-4, 2e-4])));
+    events.push(release(6, "fast", vec![0.0]));
+    events.extend((7..10).map(|i| release(i, "fast", vec![0.0, 1e-4, 2e-4, 10.2e-3, 10.3e-3])));
+    let groups = group(&events, 3e-6, GAP);
+    let text = bounce_table::calibrate::by_section(&groups);
+    // The earlier half is the first five releases, all slow.
+    assert!(
+        text.contains(
+            "| synthetic | release | slow | 5 / 1 | 4 | 0 | - | 0.00 us | 200.00 us | 200.00 us |"
+        ),
+        "{text}"
+    );
+    assert!(
+        text.contains("| synthetic | release | fast | 0 / 4 | 1 | 3 | - | 10.300 ms | 10.300 ms | 10.300 ms |"),
+        "{text}"
+    );
+    // One section, or none named: nothing to compare.
+    let one: Vec<Event> = events
+        .iter()
+        .cloned()
+        .map(|e| Event {
+            section: Some("slow".into()),
+            ..e
+        })
+        .collect();
+    assert_eq!(
+        bounce_table::calibrate::by_section(&group(&one, 3e-6, GAP)),
+        ""
+    );
+    let none: Vec<Event> = events
+        .into_iter()
+        .map(|e| Event { section: None, ..e })
+        .collect();
+    assert_eq!(
+        bounce_table::calibrate::by_section(&group(&none, 3e-6, GAP)),
+        ""
     );
 }

@@ -23,7 +23,7 @@ pub use heldout::{
 pub use options::{load, Format, Options};
 pub use plot::plot;
 pub use predictive::{inverse, Part, Predictive};
-pub use report::{assess, describe, summary};
+pub use report::{assess, by_section, describe, summary};
 pub use window::{
     chronological_cover, earlier_count, window, CaptureWindow, Cover, FAR_BEYOND, MIN_EVENTS,
 };
@@ -100,12 +100,14 @@ mod tests {
                 // closed 10 us, open 1 us (chatter), closed 20 us, open 9 ms (quiet: a second
                 // burst), closed 30 us.
                 changes: vec![0.0, 10e-6, 11e-6, 31e-6, 9.031e-3, 9.061e-3],
+                section: None,
             },
             Event {
                 switch: "x".into(),
                 origin: String::new(),
                 kind: Kind::Release,
                 changes: vec![1.0],
+                section: None,
             },
         ];
         let csv = events_csv(&events, 3e-6, 5e-3);

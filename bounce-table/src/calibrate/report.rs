@@ -1,11 +1,11 @@
 //! The report: the description table, the fits, the held-out checks and the windows
 //! (markdown).
 
-use super::fit::{BounceModel, ImpactFit, LogNormal};
+use super::fit::{bounces, BounceModel, ImpactFit, LogNormal};
 use super::heldout::{
     random_splits, ratio, validations, RatioSpread, RANDOM_SPLITS, VALIDATION_QUANTILES,
 };
-use super::window::{chronological_cover, window, Cover, FAR_BEYOND, MIN_EVENTS};
+use super::window::{chronological_cover, earlier_count, window, Cover, FAR_BEYOND, MIN_EVENTS};
 use super::{sorted, Groups};
 use crate::capture;
 use crate::output::time;
@@ -247,6 +247,80 @@ pub fn assess(groups: &Groups<'_>, percentile: f64, seed: u64) -> String {
         ));
     }
     out + &model + &checks + &spread + &windows
+}
+
+/// The bounce per section of the test protocol (markdown), where a switch and kind holds more
+/// than one: how the switch was operated (a normal press, a fast one) can change how it bounces,
+/// and a window fitted on one way of operating it holds on another only if they bounce alike.
+/// Per section, in the order the capture first shows it: its tests in the earlier and the later
+/// half (the chronological split of the held-out checks), the clean ones, those that bounce
+/// again after the burst gap (a late burst), those that reopen (where the fitted model has a
+/// reopening part: its threshold over the whole switch and kind), and the bounce's P50 / P90 /
+/// max. Empty when no switch and kind has two sections.
+#[must_use]
+pub fn by_section(groups: &Groups<'_>) -> String {
+    let mut rows = String::new();
+    for ((switch, kind), d) in groups {
+        let mut names: Vec<&str> = Vec::new();
+        for x in d {
+            if let Some(name) = x.section.as_deref() {
+                if !names.contains(&name) {
+                    names.push(name);
+                }
+            }
+        }
+        if names.len() < 2 {
+            continue;
+        }
+        let refs: Vec<&capture::Description> = d.iter().collect();
+        let reopening = BounceModel::fit(&refs).reopening;
+        let earlier = earlier_count(d.len(), 0.5);
+        for name in names {
+            let (mut halves, mut clean, mut late, mut reopens) = ([0, 0], 0, 0, 0);
+            let mut bounce = Vec::new();
+            for (i, x) in d.iter().enumerate() {
+                if x.section.as_deref() != Some(name) {
+                    continue;
+                }
+                halves[usize::from(i >= earlier)] += 1;
+                bounce.push(x.bounce);
+                if !bounces(x) {
+                    clean += 1;
+                } else if x.bursts > 1 {
+                    late += 1;
+                } else if matches!((x.hold, reopening), (Some(h), Some(c)) if h.share >= c) {
+                    reopens += 1;
+                }
+            }
+            let bounce = sorted(bounce);
+            rows.push_str(&format!(
+                "| {switch} | {} | {name} | {} / {} | {clean} | {late} | {} | {} | {} | {} |\n",
+                kind.name(),
+                halves[0],
+                halves[1],
+                if reopening.is_some() {
+                    reopens.to_string()
+                } else {
+                    "-".to_owned()
+                },
+                q(&bounce, 0.5, time),
+                q(&bounce, 0.9, time),
+                q(&bounce, 1.0, time),
+            ));
+        }
+    }
+    if rows.is_empty() {
+        return rows;
+    }
+    format!(
+        "\n## By section\n\nThe capture's sections are parts of its test protocol: the same switch operated another way \
+         (a normal press, a fast one). Per section: its tests in the earlier / later half (the chronological split \
+         of the held-out checks), the clean ones, those that bounce again after the burst gap (late burst), those \
+         that reopen (`-` where the fitted model has no reopening part), and the bounce's P50 / P90 / max. A window \
+         fitted on one way of operating a switch holds on another only if they bounce alike.\n\n\
+         | switch | kind | section | tests (earlier / later half) | clean | late burst | reopens | bounce P50 | P90 | max |\n\
+         |---|---|---|---:|---:|---:|---:|---:|---:|---:|\n{rows}"
+    )
 }
 
 /// One plain line per switch and kind, for the top of the report: the window to use and what
