@@ -129,7 +129,8 @@ fn flights_that_do_not_shrink_are_not_called_an_impact_model() {
 fn exported_windows_compile_as_c_and_rust() {
     let events: Vec<Event> = (0..10).map(|i| press(0.7, 0.01, f64::from(i))).collect();
     let groups = group(&events, 1e-12, GAP);
-    let dir = std::env::temp_dir().join(format!("calibrate-export-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("calibrate-export-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let header = dir.join("windows.h");
     std::fs::write(
@@ -188,6 +189,8 @@ fn exported_windows_compile_as_c_and_rust() {
         (recommended * 1e9).ceil()
     );
     assert!(constants.contains(&want), "{constants}");
+    // Kept when an assertion fails, to look at; removed when the test passes.
+    std::fs::remove_dir_all(&dir).ok();
 }
 
 #[test]

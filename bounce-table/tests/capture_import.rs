@@ -161,7 +161,8 @@ fn malformed_variants_are_rejected_with_the_line() {
 fn calibrate_speaks_format_and_output_like_every_subcommand() {
     use std::process::Command;
     let bin = env!("CARGO_BIN_EXE_bounce-table");
-    let dir = std::env::temp_dir().join(format!("bounce-table-calibrate-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("bounce-table-calibrate-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");
     let run = |args: &[&str]| {
         Command::new(bin)
@@ -264,4 +265,6 @@ fn calibrate_speaks_format_and_output_like_every_subcommand() {
         .file_name()
         .to_string_lossy()
         .contains("tmp-")));
+    // Kept when an assertion fails, to look at; removed when the test passes.
+    std::fs::remove_dir_all(&dir).ok();
 }

@@ -210,7 +210,8 @@ fn settings() -> Settings {
 
 #[test]
 fn scene_files_are_read_or_refused_by_place() {
-    let dir = std::env::temp_dir().join(format!("bounce-table-fuzz-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("bounce-table-fuzz-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");
     let example =
         std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/example.toml"))
@@ -278,6 +279,8 @@ fn scene_files_are_read_or_refused_by_place() {
         accepted > 0 && refused > 0,
         "the mutations reach both sides"
     );
+    // Kept when an assertion fails, to look at; removed when the test passes.
+    std::fs::remove_dir_all(&dir).ok();
 }
 
 #[test]
