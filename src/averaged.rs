@@ -323,7 +323,11 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
     /// The averaged prediction (docs/physics.md sec. 3). Expected error: docs/physics.md sec. 6 (preload
     /// at j0 <= 1 long by at most 4.7 % (R = 0.05), 1.7 % from R = 0.5; gap end -4 % to +99 % with
     /// few impacts; thresholds ~ r/2).
+    ///
+    /// Outlined on AVR: inlined into a firmware's caller it spills more than the call costs
+    /// (800 B of the Uno's flash for the averaged tiers); on Cortex-M the inliner decides.
     #[must_use]
+    #[cfg_attr(target_arch = "avr", inline(never))]
     pub fn predict(&self) -> Prediction<F> {
         self.predict_unchecked().within_range()
     }
