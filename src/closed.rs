@@ -406,6 +406,10 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
 /// The closed-form tier: the exact discrete sums where they exist (no damping between impacts,
 /// or Delta = 0 without a kernel), else the closed forms of sec. 5 (t_b1v, t_b2r and the
 /// small-impulse asymptote they come from).
+///
+/// Never inlined: it was outlined while the exact tier called it as well, and inlined into a
+/// firmware's one caller it is larger (920 B on the Uno, 296 B on the M4F: `scripts/cost-report.sh`).
+#[inline(never)]
 pub(crate) fn predict<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Prediction<F> {
     if let Some(p) = crate::regime::answer(scene) {
         return p;
@@ -488,8 +492,10 @@ impl<F: Float> Count<F> {
 }
 
 /// Exact discrete impacts: zeta = 0 (any Delta; impulses x R per impact) or Delta = 0 with
-/// viscous damping (flights pi / Omega_d, impulses x R exp(-zeta Omega pi / Omega_d)).
-fn exact_discrete<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Prediction<F> {
+/// viscous damping (flights pi / Omega_d, impulses x R exp(-zeta Omega pi / Omega_d)). The
+/// exact tier answers those scenes with it too (without the closed forms of sec. 5, which it
+/// then does not link).
+pub(crate) fn exact_discrete<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Prediction<F> {
     let zeta = scene.dissipation().damping_ratio();
     let omega = scene.omega();
     let loss_decay = -(-scene.loss()).ln_1p();

@@ -692,7 +692,7 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
         };
     }
     if !dissipation.dissipates() || scene.delta() == F::ZERO {
-        return closed::predict(scene);
+        return closed::exact_discrete(scene);
     }
     let zeta = dissipation.damping_ratio();
     let mut tail = tail::ZenoTail::EMPTY;
