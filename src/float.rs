@@ -315,7 +315,11 @@ impl Float for f32 {
         {
             micromath::F32Ext::sqrt(self)
         }
-        #[cfg(not(feature = "micromath"))]
+        #[cfg(all(not(feature = "micromath"), target_arch = "avr"))]
+        {
+            core::f32::math::sqrt(self)
+        }
+        #[cfg(all(not(feature = "micromath"), not(target_arch = "avr")))]
         {
             sqrt_f32(self)
         }
@@ -381,11 +385,25 @@ impl Float for f32 {
     }
     #[inline]
     fn floor(self) -> Self {
-        libm::floorf(self)
+        #[cfg(target_arch = "avr")]
+        {
+            core::f32::math::floor(self)
+        }
+        #[cfg(not(target_arch = "avr"))]
+        {
+            libm::floorf(self)
+        }
     }
     #[inline]
     fn ceil(self) -> Self {
-        libm::ceilf(self)
+        #[cfg(target_arch = "avr")]
+        {
+            core::f32::math::ceil(self)
+        }
+        #[cfg(not(target_arch = "avr"))]
+        {
+            libm::ceilf(self)
+        }
     }
     fn ceil_u32(self) -> Option<u32> {
         let up = libm::ceilf(self);
@@ -419,8 +437,11 @@ impl Float for f32 {
 /// table and no division. libm's `sqrtf` linked 480 bytes with its table on a Cortex-M4F, where
 /// `core` offers no way to the FPU's square root without `unsafe`.
 ///
-/// Negative numbers and NaN give NaN; +-0 and +inf give themselves.
-#[cfg(not(feature = "micromath"))]
+/// Negative numbers and NaN give NaN; +-0 and +inf give themselves. On AVR (a nightly target)
+/// the square root, floor and ceiling go through `core::f32::math` instead: calls to `sqrtf`,
+/// `floorf` and `ceilf`, which `.cargo/config.toml`'s flags resolve to avr-libc's assembly
+/// (140 bytes for the square root; `scripts/uno.sh` checks that the Uno prints the host's lines).
+#[cfg(all(not(feature = "micromath"), not(target_arch = "avr")))]
 fn sqrt_f32(x: f32) -> f32 {
     if x.is_nan() || x < 0.0 {
         return f32::NAN;

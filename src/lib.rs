@@ -54,6 +54,7 @@
 //! instead of libm (less flash, a few percent of error: see [`Float`]); `f64` always uses libm.
 //! `defmt`: `defmt::Format` on the public types, for logging from firmware.
 #![no_std]
+#![cfg_attr(target_arch = "avr", feature(core_float_math))]
 // docs.rs (its metadata below in Cargo.toml) marks what a feature adds.
 #![cfg_attr(docsrs, feature(doc_cfg))]
 #![forbid(unsafe_code)]
