@@ -408,7 +408,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
 /// small-impulse asymptote they come from).
 ///
 /// Never inlined: it was outlined while the exact tier called it as well, and inlined into a
-/// firmware's one caller it is larger (920 B on the Uno, 296 B on the M4F: `scripts/cost-report.sh`).
+/// firmware's one caller it is larger (920 B on the Uno, 296 B on the M4F).
 #[inline(never)]
 pub(crate) fn predict<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Prediction<F> {
     if let Some(p) = crate::regime::answer(scene) {

@@ -711,12 +711,12 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
 
 /// Solves at most `max_impacts` flights of `flights`, then the tail, the end or the averaged
 /// rest; counts and the threshold's crossing as they pass.
-#[allow(clippy::too_many_lines)]
-// one loop and its hand-over; splitting it would hide the state
-// On the Uno (AVR: every float operation a call, 32 registers of 8 bits) `solve` and
-// `predict` inlined into the firmware's one caller spill more than the call costs: outlined,
-// the exact tier's firmware is 3.7 KB smaller (`scripts/cost-report.sh`). On Cortex-M the
-// inliner's choice is the smaller one, so only AVR.
+///
+/// Outlined on AVR, as `predict` is: on the Uno (every float operation a call, 32 registers of 8
+/// bits) the two inlined into the firmware's one caller spill more than the calls cost, and
+/// outlined the exact tier's firmware is 3.7 KB smaller (`scripts/cost-report.sh`). On Cortex-M
+/// the inliner's choice is the smaller one.
+#[allow(clippy::too_many_lines)] // one loop and its hand-over; splitting it would hide the state
 #[cfg_attr(target_arch = "avr", inline(never))]
 fn solve<F: Float, D: Dissipation<F>, M: Flights<F> + Copy>(
     scene: &Scene<F, D>,
