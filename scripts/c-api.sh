@@ -60,7 +60,7 @@ cargo +nightly build --quiet --release -p contact-bounce-c --target avr-none -Zb
 uno() {
   avr-gcc -mmcu=atmega328p -Os -std=gnu99 -Wall -Wextra -Werror -ffunction-sections -fdata-sections \
     -I"$C/include" -I"$C/examples/c" "$C/examples/c/uno.c" -Wl,--gc-sections \
-    -Wl,-u,__addsf3,-u,__subsf3,-u,__mulsf3,-u,__divsf3,-u,__eqsf2,-u,__nesf2,-u,__ltsf2,-u,__lesf2,-u,__gtsf2,-u,__gesf2,-u,__unordsf2,-u,__floatsisf,-u,__floatunsisf,-u,__fixsfsi,-u,__fixunssfsi,-u,sqrtf,-u,floorf,-u,ceilf \
+    -Wl,-u,__addsf3,-u,__subsf3,-u,__mulsf3,-u,__divsf3,-u,__eqsf2,-u,__nesf2,-u,__ltsf2,-u,__lesf2,-u,__gtsf2,-u,__gesf2,-u,__unordsf2,-u,__floatsisf,-u,__floatunsisf,-u,__fixsfsi,-u,__fixunssfsi,-u,sqrtf \
     -lm target/avr-none/release/libcontact_bounce_c.a -lm "$@"
 }
 uno -o "$tmp/uno.elf"

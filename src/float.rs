@@ -385,25 +385,11 @@ impl Float for f32 {
     }
     #[inline]
     fn floor(self) -> Self {
-        #[cfg(target_arch = "avr")]
-        {
-            core::f32::math::floor(self)
-        }
-        #[cfg(not(target_arch = "avr"))]
-        {
-            libm::floorf(self)
-        }
+        libm::floorf(self)
     }
     #[inline]
     fn ceil(self) -> Self {
-        #[cfg(target_arch = "avr")]
-        {
-            core::f32::math::ceil(self)
-        }
-        #[cfg(not(target_arch = "avr"))]
-        {
-            libm::ceilf(self)
-        }
+        libm::ceilf(self)
     }
     fn ceil_u32(self) -> Option<u32> {
         let up = libm::ceilf(self);
@@ -438,9 +424,10 @@ impl Float for f32 {
 /// `core` offers no way to the FPU's square root without `unsafe`.
 ///
 /// Negative numbers and NaN give NaN; +-0 and +inf give themselves. On AVR (a nightly target)
-/// the square root, floor and ceiling go through `core::f32::math` instead: calls to `sqrtf`,
-/// `floorf` and `ceilf`, which `.cargo/config.toml`'s flags resolve to avr-libc's assembly
-/// (140 bytes for the square root; `scripts/uno.sh` checks that the Uno prints the host's lines).
+/// the square root goes through `core::f32::math::sqrt` instead: a call to `sqrtf`, which
+/// `.cargo/config.toml`'s flags resolve to avr-libc's assembly (140 bytes; `scripts/uno.sh`
+/// checks that the Uno prints the host's lines). avr-libc has no `floorf` or `ceilf` (only
+/// `floor` and `ceil`), so floor and ceiling stay libm's.
 #[cfg(all(not(feature = "micromath"), not(target_arch = "avr")))]
 fn sqrt_f32(x: f32) -> f32 {
     if x.is_nan() || x < 0.0 {
