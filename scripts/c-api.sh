@@ -55,13 +55,14 @@ echo "ok: the C API on the Cortex-M4F under QEMU ($(wc -l < "$tmp/cortex_m") lin
 source scripts/avr-toolchain.sh
 avr_toolchain "the C API on the Uno"
 cargo +nightly build --quiet --release -p contact-bounce-c --target avr-none -Zbuild-std=core
-# As .cargo/config.toml does for Rust firmware: avr-libc's single-precision routines, marked
-# undefined before -lm, are taken instead of the library's generic ones.
+# As .cargo/config.toml does for Rust firmware: avr-libc's single-precision routines, square
+# root and memory copies, marked undefined before -lm and -lc, are taken instead of the
+# library's generic ones.
 uno() {
   avr-gcc -mmcu=atmega328p -Os -std=gnu99 -Wall -Wextra -Werror -ffunction-sections -fdata-sections \
     -I"$C/include" -I"$C/examples/c" "$C/examples/c/uno.c" -Wl,--gc-sections \
-    -Wl,-u,__addsf3,-u,__subsf3,-u,__mulsf3,-u,__divsf3,-u,__eqsf2,-u,__nesf2,-u,__ltsf2,-u,__lesf2,-u,__gtsf2,-u,__gesf2,-u,__unordsf2,-u,__floatsisf,-u,__floatunsisf,-u,__fixsfsi,-u,__fixunssfsi,-u,sqrtf \
-    -lm target/avr-none/release/libcontact_bounce_c.a -lm "$@"
+    -Wl,-u,__addsf3,-u,__subsf3,-u,__mulsf3,-u,__divsf3,-u,__eqsf2,-u,__nesf2,-u,__ltsf2,-u,__lesf2,-u,__gtsf2,-u,__gesf2,-u,__unordsf2,-u,__floatsisf,-u,__floatunsisf,-u,__fixsfsi,-u,__fixunssfsi,-u,sqrtf,-u,memcpy,-u,memmove,-u,memset \
+    -lm -lc target/avr-none/release/libcontact_bounce_c.a -lm "$@"
 }
 uno -o "$tmp/uno.elf"
 avr-size "$tmp/uno.elf"
