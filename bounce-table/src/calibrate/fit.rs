@@ -170,14 +170,22 @@ fn information(parts: &[&[f64]], extra: f64) -> f64 {
     -2.0 * likelihood + params * n.ln()
 }
 
+/// Whether a one-burst event reopens at `threshold` (its hold's share of the longest flight at
+/// least the threshold; never without a threshold or a hold).
+#[must_use]
+pub fn reopens(d: &capture::Description, threshold: Option<f64>) -> bool {
+    matches!((d.hold, threshold), (Some(h), Some(c)) if h.share >= c)
+}
+
 /// The bounces of one-burst events that reopen (their hold at least `threshold`) and of the
 /// others.
 fn split_at(one_burst: &[&capture::Description], threshold: Option<f64>) -> (Vec<f64>, Vec<f64>) {
     let (mut reopen, mut plain) = (Vec::new(), Vec::new());
     for x in one_burst {
-        match (x.hold, threshold) {
-            (Some(h), Some(c)) if h.share >= c => reopen.push(x.bounce),
-            _ => plain.push(x.bounce),
+        if reopens(x, threshold) {
+            reopen.push(x.bounce);
+        } else {
+            plain.push(x.bounce);
         }
     }
     (reopen, plain)
@@ -280,19 +288,21 @@ impl BounceModel {
             .filter(|x| bounces(x) && x.bursts <= 1)
             .collect();
         let reopening = reopening_threshold(&one_burst);
-        let reopens = |x: &capture::Description| matches!((x.hold, reopening), (Some(h), Some(c)) if h.share >= c);
         let reopening_dwell = nearest_rank(
             &sorted(
                 one_burst
                     .iter()
-                    .filter(|x| reopens(x))
+                    .filter(|x| reopens(x, reopening))
                     .filter_map(|x| x.hold.map(|h| h.dwell))
                     .collect(),
             ),
             0.5,
         );
         let (reopened, _) = split_at(&one_burst, reopening);
-        let single: Vec<_> = one_burst.iter().filter(|x| !reopens(x)).collect();
+        let single: Vec<_> = one_burst
+            .iter()
+            .filter(|x| !reopens(x, reopening))
+            .collect();
         let late: Vec<f64> = d
             .iter()
             .filter(|x| bounces(x) && x.bursts > 1)

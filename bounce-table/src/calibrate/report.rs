@@ -1,7 +1,7 @@
 //! The report: the description table, the fits, the held-out checks and the windows
 //! (markdown).
 
-use super::fit::{bounces, BounceModel, ImpactFit, LogNormal};
+use super::fit::{bounces, reopens, BounceModel, ImpactFit, LogNormal};
 use super::heldout::{
     random_splits, ratio, validations, RatioSpread, RANDOM_SPLITS, VALIDATION_QUANTILES,
 };
@@ -276,7 +276,7 @@ pub fn by_section(groups: &Groups<'_>) -> String {
         let reopening = BounceModel::fit(&refs).reopening;
         let earlier = earlier_count(d.len(), 0.5);
         for name in names {
-            let (mut halves, mut clean, mut late, mut reopens) = ([0, 0], 0, 0, 0);
+            let (mut halves, mut clean, mut late, mut reopened) = ([0, 0], 0, 0, 0);
             let mut bounce = Vec::new();
             for (i, x) in d.iter().enumerate() {
                 if x.section.as_deref() != Some(name) {
@@ -288,8 +288,8 @@ pub fn by_section(groups: &Groups<'_>) -> String {
                     clean += 1;
                 } else if x.bursts > 1 {
                     late += 1;
-                } else if matches!((x.hold, reopening), (Some(h), Some(c)) if h.share >= c) {
-                    reopens += 1;
+                } else if reopens(x, reopening) {
+                    reopened += 1;
                 }
             }
             let bounce = sorted(bounce);
@@ -299,7 +299,7 @@ pub fn by_section(groups: &Groups<'_>) -> String {
                 halves[0],
                 halves[1],
                 if reopening.is_some() {
-                    reopens.to_string()
+                    reopened.to_string()
                 } else {
                     "-".to_owned()
                 },
