@@ -14,14 +14,10 @@ mod firmware;
 
 #[cfg(any(target_os = "none", target_arch = "avr"))]
 fn work() {
-    firmware::measure(|scene| {
-        let contact = core::hint::black_box(firmware::DOME).contact();
-        let _ = scene;
-        contact_bounce::Scene::new(contact, contact_bounce::Undamped).map_or(u32::MAX, |s| {
-            firmware::window(
-                &s.predict(contact_bounce::Method::Averaged(contact_bounce::Nodes::N8)),
-            )
-        })
+    firmware::measure_undamped(|scene| {
+        firmware::window(
+            &scene.predict(contact_bounce::Method::Averaged(contact_bounce::Nodes::N8)),
+        )
     });
 }
 

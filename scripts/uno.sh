@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Builds examples/uno.rs for the Arduino Uno (nightly, avr-none, -Zbuild-std=core, linked by
-# avr-gcc), runs it in simavr and checks it prints what the same example prints on the host.
+# Builds examples/uno.rs, uno_learn.rs and uno_auto.rs for the Arduino Uno (nightly, avr-none,
+# -Zbuild-std=core, linked by avr-gcc), runs each in simavr and checks it prints what the same
+# example prints on the host.
 # Installs gcc-avr, avr-libc and simavr if missing (Debian) and rust-src for the nightly.
 # Without a nightly toolchain (none can be fetched on some machines) it says SKIPPED loudly.
 set -euo pipefail
@@ -12,10 +13,25 @@ avr_toolchain "the Uno check"
 
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-for example in uno uno_learn; do
+# The stack's peak (tools/simavr-stack.c, libsimavr): a run that takes the stack down into
+# .data and .bss would overwrite them without a fault.
+if [ ! -f /usr/include/simavr/sim_avr.h ]; then
+  apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends libsimavr-dev >/dev/null
+fi
+gcc -O2 -o "$tmp/simavr-stack" tools/simavr-stack.c -lsimavr
+for example in uno uno_learn uno_auto; do
   cargo +nightly build --quiet --release --example "$example" --target avr-none -Zbuild-std=core
   elf=target/avr-none/release/examples/$example.elf
   avr-size "$elf"
+  read -r text data bss _ < <(avr-size "$elf" | tail -n 1)
+  stack=$("$tmp/simavr-stack" "$elf" 2> /dev/null | tail -n 1)
+  # The ATmega328P: 32 KB of flash (.text and .data's initial values), 2 KB of RAM.
+  echo "$example: flash $((text + data)) of 32768 bytes; RAM $((data + bss)) (.data, .bss) + $stack (stack peak) = $((data + bss + stack)) of 2048 bytes"
+  if [ $((data + bss + stack)) -gt 2048 ] || [ $((text + data)) -gt 32768 ]; then
+    echo "FAIL: $example does not fit the Uno" >&2
+    exit 1
+  fi
   cargo run --quiet --example "$example" > "$tmp/host"
   # simavr prints the UART in colour, one line at a time ending in '.', then its own lines; it
   # never stops on a bad opcode, hence the timeout.

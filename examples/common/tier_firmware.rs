@@ -6,7 +6,7 @@
 // counts instructions (QEMU) or cycles (simavr) between the marks, and takes the crate's share
 // of flash as this firmware's text minus `tier_empty`'s (the same skeleton, no crate code).
 
-use contact_bounce::{catalogue, Margin, Prediction, Preloaded, Scene, Viscous, Window};
+use contact_bounce::{catalogue, Margin, Prediction, Preloaded, Scene, Undamped, Viscous, Window};
 use core::hint::black_box;
 
 /// The tactile dome's six numbers, rounded to f32 when the firmware is compiled.
@@ -55,10 +55,23 @@ pub fn measure(work: impl FnOnce(&Scene<f32, Viscous<f32>>) -> u32) {
     cost_mark(0);
     let scene = switch.scene();
     cost_mark(1);
-    let ticks = match scene {
-        Ok(scene) => work(&black_box(scene)),
-        Err(_) => u32::MAX,
-    };
+    finish(scene.map(|scene| work(&black_box(scene))));
+}
+
+/// Validates the dome without its damping (a `Scene<f32, Undamped>`, whose type links no
+/// damping) and runs `work` on it between the marks.
+#[allow(dead_code)]
+pub fn measure_undamped(work: impl FnOnce(&Scene<f32, Undamped>) -> u32) {
+    let switch = black_box(DOME);
+    cost_mark(0);
+    let scene = Scene::new(switch.contact(), Undamped);
+    cost_mark(1);
+    finish(scene.map(|scene| work(&black_box(scene))));
+}
+
+/// The last mark, and the result (`u32::MAX` for an invalid scene) stored to a volatile.
+fn finish<E>(ticks: Result<u32, E>) {
+    let ticks = ticks.unwrap_or(u32::MAX);
     cost_mark(2);
     let mut out = 0_u32;
     // SAFETY: a valid, aligned local.

@@ -1,11 +1,13 @@
-// The lines `examples/debounce_trace.rs` prints, the same on the host and on every target.
+// The lines `examples/debounce_trace.rs` (and, for the relay without its damping,
+// `examples/uno_auto.rs`) print, the same on the host and on every target.
 
 #[path = "../data/relay_press.rs"]
 #[allow(dead_code)]
 pub mod data;
 
 use contact_bounce::{
-    catalogue, debounce::Polarity, Debouncer, Margin, Method, Mode, Tolerance, Window, Windows,
+    catalogue, debounce::Polarity, scene::Dissipation, Debouncer, Float, Margin, Method, Mode,
+    Scene, Tolerance, Undamped, Window, Windows,
 };
 use core::convert::Infallible;
 use core::fmt::Write;
@@ -47,11 +49,37 @@ fn run_one(out: &mut impl Write, label: &str, windows: Windows) -> core::fmt::Re
     writeln!(out)
 }
 
+/// The signal relay as the catalogue gives it (restitution and viscous damping).
+#[allow(dead_code)] // each example runs one of the two
 pub fn run(out: &mut impl Write) -> core::fmt::Result {
+    match catalogue::SIGNAL_RELAY.scene::<f32>() {
+        Ok(scene) => run_scene(out, &scene),
+        Err(_) => writeln!(out, "invalid scene"),
+    }
+}
+
+/// The signal relay with restitution only (`Scene<f32, Undamped>`: none of the damped code is
+/// linked). Leaving damping out only lengthens a preload's predicted bounce, so its window
+/// still covers the recorded (damped) press.
+#[allow(dead_code)] // each example runs one of the two
+pub fn run_restitution_only(out: &mut impl Write) -> core::fmt::Result {
+    match Scene::new(
+        catalogue::SIGNAL_RELAY.preloaded::<f32>().contact(),
+        Undamped,
+    ) {
+        Ok(scene) => run_scene(out, &scene),
+        Err(_) => writeln!(out, "invalid scene"),
+    }
+}
+
+/// Auto at 10 % on `scene`, its window at the trace's sampling period widened by the
+/// expected error, and the recorded press through the debouncer in both modes, beside a guessed
+/// short hold-off.
+fn run_scene<D: Dissipation<f32>>(
+    out: &mut impl Write,
+    scene: &Scene<f32, D>,
+) -> core::fmt::Result {
     let period = f32::from(u16::try_from(data::PERIOD_NS).unwrap_or(u16::MAX)) * 1e-9;
-    let Ok(scene) = catalogue::SIGNAL_RELAY.scene::<f32>() else {
-        return writeln!(out, "invalid scene");
-    };
     let Ok(tolerance) = Tolerance::new(0.1f32) else {
         return writeln!(out, "invalid tolerance");
     };
@@ -60,6 +88,17 @@ pub fn run(out: &mut impl Write) -> core::fmt::Result {
     let Ok(window) = Window::from_prediction(&p, &margin, period) else {
         return writeln!(out, "no finite window");
     };
+    // The bounce in whole nanoseconds, and the expected error in parts per million.
+    let ns = p.bounce_time().and_then(|t| (t * 1e9).ceil_u32());
+    let ppm = p.expected_error.and_then(|e| (e * 1e6).ceil_u32());
+    writeln!(
+        out,
+        "auto 10 %: {} ({}), bounce {} ns, expected error {} ppm",
+        p.tier.name(),
+        p.regime.name(),
+        ns.unwrap_or(0),
+        ppm.unwrap_or(0)
+    )?;
     for (label, ticks, mode) in [
         ("physics confirm", window, Mode::Confirm),
         ("physics hold-off", window, Mode::HoldOff),
