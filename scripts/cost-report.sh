@@ -183,7 +183,7 @@ if [ "$uno" = 1 ]; then
     echo
     echo "Cycles between consecutive calls of \`cost_mark\` in \`examples/uno_cost.rs\`. The map's full"
     echo "prediction, the closed, averaged and exact tiers do not fit the Uno beside the rest (sizes above;"
-    echo "alone, every tier but the exact one and Auto fits: \"One firmware per tier\" below): on the Uno,"
+    echo "alone, every tier but Auto on a damped scene fits: \"One firmware per tier\" below): on the Uno,"
     echo "walk the map with \`MapImpacts\`, take a lean path, or fix the window at compile time."
     echo
     echo "| validate scene | map walk + Zeno tail | debouncer (ours), per sample | debouncr, per sample | learner, per sample | idle: ours / learner, per sample |"

@@ -36,7 +36,8 @@ pub struct Preloaded<F> {
     pub closing_speed: F,
     /// Coefficient of restitution R.
     pub restitution: F,
-    /// Viscous damping ratio zeta (0 for none).
+    /// Viscous damping ratio zeta (> 0: a preload without viscous damping is
+    /// `Scene::new(switch.contact(), Undamped)`, which links none of the damped code).
     pub damping_ratio: F,
 }
 
@@ -60,7 +61,8 @@ impl<F: Float> Preloaded<F> {
     /// The validated scene, with its viscous damping.
     ///
     /// # Errors
-    /// As [`Scene::new`] and [`Viscous::new`]: the first invalid parameter, named.
+    /// As [`Scene::new`] and [`Viscous::new`]: the first invalid parameter, named (a damping
+    /// ratio of 0 is [`Reason::NotPositive`](crate::Reason::NotPositive)).
     #[inline]
     pub fn scene(&self) -> Result<Scene<F, Viscous<F>>, Error> {
         Scene::new(self.contact(), Viscous::new(self.damping_ratio)?)

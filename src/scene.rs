@@ -681,7 +681,7 @@ impl<F: Float> Scene<F, AnyDissipation<F>> {
         kernel: Option<Hereditary<F>>,
     ) -> Result<Self, Error> {
         let reduction = bodies.reduce()?;
-        let viscous = (reduction.zeta > F::ZERO).then_some(Viscous::new(reduction.zeta)?);
+        let viscous = Viscous::optional(reduction.zeta)?;
         let contact = Contact {
             frequency: Frequency::Omega(reduction.omega),
             offset,

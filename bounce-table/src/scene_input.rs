@@ -526,9 +526,8 @@ impl SceneInput {
         let restitution = Restitution::Coefficient(c("restitution", self.restitution)?);
         let v0 = c("closing_speed", self.closing_speed)?;
         let one_body = |frequency: Frequency<F>| -> Result<_, FieldError> {
-            let viscous = Some(
-                Viscous::new(c("damping_ratio", self.damping_ratio)?).map_err(|e| self.fault(e))?,
-            );
+            let viscous = Viscous::optional(c("damping_ratio", self.damping_ratio)?)
+                .map_err(|e| self.fault(e))?;
             let contact = Contact {
                 frequency,
                 offset,

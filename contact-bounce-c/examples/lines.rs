@@ -18,7 +18,7 @@ const SWITCHES: [[f32; 7]; 3] = [
 
 const SAMPLES: [u8; 20] = [0, 1, 0, 1, 1, 0, 1, 1, 1, 1, 1, 1, 0, 1, 0, 0, 0, 0, 0, 0];
 
-fn scene(s: [f32; 7]) -> Result<Scene<f32, Viscous<f32>>, Error> {
+fn scene(s: [f32; 7]) -> Result<Scene<f32, Option<Viscous<f32>>>, Error> {
     let [mass, stiffness, offset, r, zeta, v0, fraction] = s;
     Scene::new(
         Contact {
@@ -32,7 +32,7 @@ fn scene(s: [f32; 7]) -> Result<Scene<f32, Viscous<f32>>, Error> {
                 Threshold::FractionOfFirst(fraction)
             },
         },
-        Viscous::new(zeta)?,
+        Viscous::optional(zeta)?,
     )
 }
 

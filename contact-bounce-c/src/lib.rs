@@ -236,7 +236,7 @@ pub extern "C" fn cb_parameter_name(parameter: u8) -> *const core::ffi::c_char {
 }
 
 /// The switch as the core's scene, validated.
-fn scene(switch: &cb_switch) -> Result<Scene<f32, Viscous<f32>>, Error> {
+fn scene(switch: &cb_switch) -> Result<Scene<f32, Option<Viscous<f32>>>, Error> {
     let threshold = if switch.threshold_fraction == 0.0 {
         Threshold::None
     } else {
@@ -253,7 +253,7 @@ fn scene(switch: &cb_switch) -> Result<Scene<f32, Viscous<f32>>, Error> {
             closing_speed: switch.closing_speed,
             threshold,
         },
-        Viscous::new(switch.damping_ratio)?,
+        Viscous::optional(switch.damping_ratio)?,
     )
 }
 

@@ -40,7 +40,7 @@ impl GridScene {
     ///
     /// # Errors
     /// When the core refuses the scene.
-    pub fn core(&self) -> Result<Scene<f64, Viscous<f64>>, contact_bounce::Error> {
+    pub fn core(&self) -> Result<Scene<f64, Option<Viscous<f64>>>, contact_bounce::Error> {
         self.core_in()
     }
 
@@ -48,11 +48,11 @@ impl GridScene {
     ///
     /// # Errors
     /// When the core refuses the scene.
-    pub fn core_f32(&self) -> Result<Scene<f32, Viscous<f32>>, contact_bounce::Error> {
+    pub fn core_f32(&self) -> Result<Scene<f32, Option<Viscous<f32>>>, contact_bounce::Error> {
         self.core_in()
     }
 
-    fn core_in<F: Float>(&self) -> Result<Scene<F, Viscous<F>>, contact_bounce::Error> {
+    fn core_in<F: Float>(&self) -> Result<Scene<F, Option<Viscous<F>>>, contact_bounce::Error> {
         let r = &self.reference;
         Scene::new(
             Contact {
@@ -64,7 +64,7 @@ impl GridScene {
                     .threshold
                     .map_or(Threshold::None, |p| Threshold::Impulse(F::from_f64(p))),
             },
-            Viscous::new(F::from_f64(r.zeta))?,
+            Viscous::optional(F::from_f64(r.zeta))?,
         )
     }
 }

@@ -741,7 +741,7 @@ fn the_exact_kernel_tier_keeps_its_expected_error_to_60_digits() {
                 threshold: Threshold::None,
             },
             (
-                Viscous::new(zeta).unwrap(),
+                Viscous::optional(zeta).unwrap(),
                 Hereditary::exponential(kappa, tau).unwrap(),
             ),
         )
@@ -825,7 +825,7 @@ fn the_exact_tier_solves_kernels_off_the_grid() {
                 threshold: Threshold::None,
             },
             (
-                Viscous::new(k.zeta).expect("valid"),
+                Viscous::optional(k.zeta).expect("valid"),
                 Hereditary::exponential(k.kappa, k.tau).expect("valid"),
             ),
         )

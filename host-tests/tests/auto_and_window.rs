@@ -6,7 +6,7 @@ use contact_bounce::{
     Offset, Parameter, Reason, Restitution, Scene, Threshold, Tolerance, Undamped, Viscous, Window,
 };
 
-fn preload(r: f64, zeta: f64, j0: f64) -> Scene<f64, Viscous<f64>> {
+fn preload(r: f64, zeta: f64, j0: f64) -> Scene<f64, Option<Viscous<f64>>> {
     let v0 = j0 * 1000.0 * 1e-3 / (2.0 * r);
     let contact = Contact {
         frequency: Frequency::Omega(1000.0),
@@ -15,10 +15,13 @@ fn preload(r: f64, zeta: f64, j0: f64) -> Scene<f64, Viscous<f64>> {
         closing_speed: v0,
         threshold: Threshold::None,
     };
-    Scene::new(contact, Viscous::new(zeta).unwrap()).unwrap()
+    Scene::new(contact, Viscous::optional(zeta).unwrap()).unwrap()
 }
 
-fn auto(scene: &Scene<f64, Viscous<f64>>, tolerance: f64) -> contact_bounce::Prediction<f64> {
+fn auto(
+    scene: &Scene<f64, Option<Viscous<f64>>>,
+    tolerance: f64,
+) -> contact_bounce::Prediction<f64> {
     scene.predict(Method::Auto(Tolerance::new(tolerance).unwrap()))
 }
 
@@ -52,7 +55,8 @@ fn auto_takes_the_only_tier_that_fits() {
 #[test]
 fn auto_weighs_the_exact_tier_by_its_cost() {
     let two = Tolerance::new(0.02).unwrap();
-    let run = |scene: &Scene<f64, Viscous<f64>>, method| scene.predict(method).promises(two);
+    let run =
+        |scene: &Scene<f64, Option<Viscous<f64>>>, method| scene.predict(method).promises(two);
     let map = Method::Map {
         max_impacts: 100_000,
     };
@@ -284,7 +288,7 @@ fn a_preloaded_switch_gives_the_long_paths_window_and_errors() {
     ) -> Result<Window, contact_bounce::Error> {
         let scene = contact_bounce::Scene::new(
             p.contact(),
-            contact_bounce::Viscous::new(p.damping_ratio)?,
+            contact_bounce::Viscous::optional(p.damping_ratio)?,
         )?;
         let prediction = scene.predict(method);
         let margin = Margin::new(F::from_f64(1.5), F::ZERO)?.with_expected_error(&prediction);

@@ -45,7 +45,7 @@ fn averaged_tends_to_t_b1v_as_j0_vanishes() {
         for j0 in [1e-2, 1e-3] {
             let scene = Scene::new(
                 contact(delta, r, v0_for(j0, delta, r), Threshold::None),
-                Viscous::new(zeta).unwrap(),
+                Viscous::optional(zeta).unwrap(),
             )
             .unwrap();
             let closed = scene.t_b1v().unwrap().time;
@@ -74,7 +74,7 @@ fn averaged_tends_to_t_b2_and_t_b2r_as_j0_vanishes() {
         for j0 in [1e-2, 1e-3] {
             let scene = Scene::new(
                 contact(delta, r, v0_for(j0, delta, r), Threshold::None),
-                Viscous::new(zeta).unwrap(),
+                Viscous::optional(zeta).unwrap(),
             )
             .unwrap();
             let closed = if r == 0.0 {
@@ -94,7 +94,7 @@ fn averaged_tends_to_t_b2_and_t_b2r_as_j0_vanishes() {
     // t_b2r -> t_b2 as r -> 0.
     let scene = Scene::new(
         contact(delta, 1e-9, 0.1, Threshold::None),
-        Viscous::new(0.01).unwrap(),
+        Viscous::optional(0.01).unwrap(),
     )
     .unwrap();
     assert!(rel(scene.t_b2r().unwrap().time, scene.t_b2().unwrap().time) < 1e-6);
@@ -114,7 +114,7 @@ fn averaged_converges_as_nodes_grow() {
     for (delta, r, zeta, j0, threshold) in cases {
         let scene = Scene::new(
             contact(delta, r, v0_for(j0, delta, r), threshold),
-            Viscous::new(zeta).unwrap(),
+            Viscous::optional(zeta).unwrap(),
         )
         .unwrap();
         let reference = averaged_end(&scene, Nodes::N20);
@@ -176,7 +176,7 @@ fn envelope_inverts_the_bounce_time() {
             v0_for(2.0, delta, 0.3),
             Threshold::FractionOfFirst(1e-3),
         ),
-        Viscous::new(0.05).unwrap(),
+        Viscous::optional(0.05).unwrap(),
     )
     .unwrap();
     let averaged = scene.averaged(Nodes::N8);
@@ -235,7 +235,7 @@ fn laws_of_motion_start_at_the_stop_and_follow_the_orbit() {
     let delta = -1e-3;
     let scene = Scene::new(
         contact(delta, 0.3, v0_for(1.0, delta, 0.3), Threshold::None),
-        Viscous::new(0.02).unwrap(),
+        Viscous::optional(0.02).unwrap(),
     )
     .unwrap();
     let averaged = scene.averaged(Nodes::N8);
@@ -272,7 +272,7 @@ fn map_agrees_with_averaged_where_section_6_says_it_is_good() {
     for (r, zeta, bound) in [(0.3, 0.01, 0.013), (0.05, 0.1, 0.035), (0.5, 0.005, 0.013)] {
         let scene = Scene::new(
             contact(delta, r, v0_for(0.8, delta, r), Threshold::None),
-            Viscous::new(zeta).unwrap(),
+            Viscous::optional(zeta).unwrap(),
         )
         .unwrap();
         let map = scene
@@ -294,7 +294,7 @@ fn map_hands_over_to_averaged_past_its_cap() {
     let delta = -1e-3;
     let scene = Scene::new(
         contact(delta, 1e-4, v0_for(1.0, delta, 1e-4), Threshold::None),
-        Viscous::new(0.001).unwrap(),
+        Viscous::optional(0.001).unwrap(),
     )
     .unwrap();
     let capped = scene.predict(Method::Map { max_impacts: 100 });
@@ -342,7 +342,7 @@ fn two_bodies_with_equal_partial_frequencies_reduce_exactly() {
             closing_speed: 0.3,
             threshold: Threshold::None,
         },
-        Viscous::new(0.02).unwrap(),
+        Viscous::optional(0.02).unwrap(),
     )
     .unwrap();
     for method in [
@@ -406,7 +406,7 @@ fn two_bodies_with_unequal_frequencies_are_flagged() {
 fn single_impact_and_periodic_need_no_model() {
     let single = Scene::new(
         contact(1e-3, 0.3, 0.1, Threshold::None),
-        Viscous::new(1.0).unwrap(),
+        Viscous::optional(1.0).unwrap(),
     )
     .unwrap();
     let periodic = Scene::new(contact(-1e-3, 0.0, 0.1, Threshold::None), Undamped).unwrap();
@@ -448,7 +448,11 @@ fn f32_follows_f64_where_well_conditioned() {
         let th64 = fraction.map_or(Threshold::None, Threshold::FractionOfFirst);
         #[allow(clippy::cast_possible_truncation)]
         let th32 = fraction.map_or(Threshold::None, |f| Threshold::FractionOfFirst(f as f32));
-        let s64 = Scene::new(contact(delta, r, v0, th64), Viscous::new(zeta).unwrap()).unwrap();
+        let s64 = Scene::new(
+            contact(delta, r, v0, th64),
+            Viscous::optional(zeta).unwrap(),
+        )
+        .unwrap();
         #[allow(clippy::cast_possible_truncation)]
         let s32 = Scene::new(
             Contact {
@@ -458,7 +462,7 @@ fn f32_follows_f64_where_well_conditioned() {
                 closing_speed: v0 as f32,
                 threshold: th32,
             },
-            Viscous::new(zeta as f32).unwrap(),
+            Viscous::optional(zeta as f32).unwrap(),
         )
         .unwrap();
         for (m64, m32) in [
@@ -539,9 +543,12 @@ fn restitution_only_averaged_matches_a_direct_quadrature_of_its_integral() {
         .expect("ends");
         assert!(rel(got, want) < 1e-9, "{delta} {r} {j0}: {got} vs {want}");
         // A damped type with zeta = 0 takes the quadrature: the same, to its error.
-        let quadrature = Scene::new(contact(delta, r, v0, threshold), Viscous::new(0.0).unwrap())
-            .expect("valid")
-            .predict(Method::Averaged(Nodes::N20));
+        let quadrature = Scene::new(
+            contact(delta, r, v0, threshold),
+            Viscous::optional(0.0).unwrap(),
+        )
+        .expect("valid")
+        .predict(Method::Averaged(Nodes::N20));
         let other = if fraction.is_some() {
             quadrature.last_above_time.seconds()
         } else {

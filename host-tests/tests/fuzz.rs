@@ -158,7 +158,7 @@ fn predictions<F: Float + std::fmt::Debug>(rng: &mut Rng, n: usize) -> (usize, V
             closing_speed: F::from_f64(v0),
             threshold,
         };
-        let Ok(viscous) = Viscous::new(F::from_f64(zeta)) else {
+        let Ok(viscous) = Viscous::optional(F::from_f64(zeta)) else {
             continue;
         };
         // Refused scenes are fine: a typed error, which is what the harness wants.
@@ -172,7 +172,7 @@ fn predictions<F: Float + std::fmt::Debug>(rng: &mut Rng, n: usize) -> (usize, V
         let tau = rng.log_uniform(1e-3, 1e3) / omega;
         let kappa = rng.unit() * 0.9 * omega * omega / tau;
         if let (Ok(viscous), Ok(kernel)) = (
-            Viscous::new(F::from_f64(zeta)),
+            Viscous::optional(F::from_f64(zeta)),
             Hereditary::exponential(F::from_f64(kappa), F::from_f64(tau)),
         ) {
             if let Ok(scene) = Scene::new(contact, (viscous, kernel)) {
@@ -502,7 +502,7 @@ fn raw_inputs<F: Float + std::fmt::Debug>(
         }
         let _ = Tolerance::new(tol);
         let kernel = Hereditary::exponential(kappa, tau).and_then(|k| k.with_tolerance(tol));
-        let Ok(viscous) = Viscous::new(z) else {
+        let Ok(viscous) = Viscous::optional(z) else {
             continue;
         };
         if let Ok(scene) = Scene::new(contact, viscous) {
@@ -642,7 +642,7 @@ fn the_raw_bits_harness_findings_stay_fixed() {
             closing_speed,
             threshold,
         };
-        let scene = Scene::new(contact, Viscous::new(zeta).expect("valid")).expect("accepted");
+        let scene = Scene::new(contact, Viscous::optional(zeta).expect("valid")).expect("accepted");
         check_scene(&scene, &format!("{contact:?}"), &mut checked, &mut faults);
     }
     assert_eq!(checked, 20);
@@ -655,7 +655,7 @@ fn an_acceleration_scale_beyond_the_float_is_refused() {
     // rad/s), grazing, closing at 1e30 m/s. Omega J = 5e46 overflows f32: the map's viscous loss
     // over a flight was -inf and its last-above time NaN. Refused, naming the closing speed; the
     // same switch at 1e15 m/s (Omega J = 5e31), and at 1e30 m/s in f64, are predicted soundly.
-    fn scene<F: Float>(v0: f64) -> Result<Scene<F, Viscous<F>>, contact_bounce::Error> {
+    fn scene<F: Float>(v0: f64) -> Result<Scene<F, Option<Viscous<F>>>, contact_bounce::Error> {
         Scene::new(
             Contact {
                 frequency: Frequency::MassStiffness {
@@ -667,7 +667,7 @@ fn an_acceleration_scale_beyond_the_float_is_refused() {
                 closing_speed: F::from_f64(v0),
                 threshold: Threshold::FractionOfFirst(F::from_f64(1e-6)),
             },
-            Viscous::new(F::from_f64(0.009_702_306))?,
+            Viscous::optional(F::from_f64(0.009_702_306))?,
         )
     }
     let refused = scene::<f32>(1e30).map(|_| ());
@@ -694,7 +694,7 @@ fn ratios_beyond_f32_are_taken_in_logarithms() {
     // closed tier's t_b1v was `Never` and its count above the threshold -8.0e9 (ln1p(u) taken as
     // ln u for u = 0.02). Now the f32 closed tier agrees with f64's to f32 rounding over ~100
     // operations (1e-5), and every check passes.
-    fn scene<F: Float>() -> Scene<F, Viscous<F>> {
+    fn scene<F: Float>() -> Scene<F, Option<Viscous<F>>> {
         Scene::new(
             Contact {
                 frequency: Frequency::MassStiffness {
@@ -706,7 +706,7 @@ fn ratios_beyond_f32_are_taken_in_logarithms() {
                 closing_speed: F::from_f64(1e30),
                 threshold: Threshold::Impulse(F::from_f64(6.900_839e-12)),
             },
-            Viscous::new(F::ONE).expect("valid"),
+            Viscous::optional(F::ONE).expect("valid"),
         )
         .expect("accepted")
     }

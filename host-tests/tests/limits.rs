@@ -55,7 +55,7 @@ fn small_impulse_limits_of_e1_preload() {
     for (r, zeta) in [(0.3, 0.0), (0.01, 0.05), (1e-4, 0.2)] {
         let scene = Scene::new(
             contact(delta, r, 1.0, Threshold::None),
-            Viscous::new(zeta).unwrap(),
+            Viscous::optional(zeta).unwrap(),
         )
         .unwrap();
         for j in [1e-2, 1e-3, 1e-5] {
@@ -80,7 +80,7 @@ fn small_impulse_limits_of_e1_gap() {
     for (r, zeta) in [(0.3, 0.0), (0.01, 0.05), (0.0, 0.2)] {
         let scene = Scene::new(
             contact(delta, r, 1.0, Threshold::FractionOfFirst(0.01)),
-            Viscous::new(zeta).unwrap(),
+            Viscous::optional(zeta).unwrap(),
         )
         .unwrap();
         for j in [1e-2, 1e-3, 1e-5] {
@@ -102,7 +102,7 @@ fn grazing_rate_is_exactly_linear() {
     for (r, zeta) in [(0.3, 0.0), (0.01, 0.05), (0.5, 0.3)] {
         let scene = Scene::new(
             contact(0.0, r, 1.0, Threshold::FractionOfFirst(0.01)),
-            Viscous::new(zeta).unwrap(),
+            Viscous::optional(zeta).unwrap(),
         )
         .unwrap();
         for impulse in [1e-9, 1e-3, 1.0, 1e6] {
@@ -120,7 +120,7 @@ fn grazing_averaged_is_the_exponential_and_closed_is_the_discrete_decay() {
     for (r, zeta, fraction) in [(0.1, 0.01, 1e-2), (0.5, 0.0, 1e-4), (0.02, 0.2, 1e-6)] {
         let scene = Scene::new(
             contact(0.0, r, 0.3, Threshold::FractionOfFirst(fraction)),
-            Viscous::new(zeta).unwrap(),
+            Viscous::optional(zeta).unwrap(),
         )
         .unwrap();
         // The averaged model integrates a constant in ln J: it is the exponential of sec. 5.
@@ -278,7 +278,7 @@ fn hereditary_sum_reduces_to_viscous() {
         .unwrap()
         .with_tolerance(1e-6)
         .unwrap();
-    let viscous = Viscous::new(zeta).unwrap();
+    let viscous = Viscous::optional(zeta).unwrap();
     for delta in [-1e-3, 0.0, 1e-3] {
         let orbit = Orbit::new(OMEGA, delta);
         for impulse in [1e-4, 1e-2, 1.0, 100.0] {
@@ -410,12 +410,12 @@ fn regimes_follow_the_table_of_section_4() {
         (1e-3, 0.3, 1.0, SingleImpact),
     ];
     for (delta, r, zeta, regime) in cases {
-        let s = Scene::new(contact(delta, r, 0.1, th), Viscous::new(zeta).unwrap()).unwrap();
+        let s = Scene::new(contact(delta, r, 0.1, th), Viscous::optional(zeta).unwrap()).unwrap();
         assert_eq!(s.regime(), regime, "{delta} {r} {zeta}");
         let endless = s.predict(Method::Closed).end_time == Time::Never;
         assert_eq!(endless, regime.is_endless(), "{delta} {r} {zeta}");
     }
-    let single = Scene::new(contact(0.0, 0.3, 0.1, th), Viscous::new(2.0).unwrap()).unwrap();
+    let single = Scene::new(contact(0.0, 0.3, 0.1, th), Viscous::optional(2.0).unwrap()).unwrap();
     assert_eq!(single.regime(), SingleImpact);
     // A kernel alone ends a gap's bounce.
     let k = Hereditary::exponential(1e6, 1e-4).unwrap();

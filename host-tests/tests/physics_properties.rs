@@ -22,7 +22,7 @@ fn one(delta: f64, r: f64, zeta: f64, v0: f64, threshold: Option<f64>) -> OneBod
     }
 }
 
-fn core(s: &OneBody) -> Scene<f64, Viscous<f64>> {
+fn core(s: &OneBody) -> Scene<f64, Option<Viscous<f64>>> {
     Scene::new(
         Contact {
             frequency: Frequency::Omega(s.omega),
@@ -31,7 +31,7 @@ fn core(s: &OneBody) -> Scene<f64, Viscous<f64>> {
             closing_speed: s.closing_speed,
             threshold: s.threshold.map_or(Threshold::None, Threshold::Impulse),
         },
-        Viscous::new(s.zeta).unwrap(),
+        Viscous::optional(s.zeta).unwrap(),
     )
     .unwrap()
 }

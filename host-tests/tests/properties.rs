@@ -113,7 +113,7 @@ fn values(r: &Raw) -> Vec<f64> {
 }
 
 fn check<F: Float>(r: &Raw) -> Result<(), TestCaseError> {
-    let built = Viscous::new(F::from_f64(r.zeta)).and_then(|viscous| {
+    let built = Viscous::optional(F::from_f64(r.zeta)).and_then(|viscous| {
         let kernel = r
             .kernel
             .map(|(k, t)| Hereditary::exponential(F::from_f64(k), F::from_f64(t)))
@@ -211,7 +211,7 @@ proptest! {
             zeta,
             kernel: None,
         };
-        let f64_scene = Scene::new(contact::<f64>(&raw), (Some(Viscous::new(zeta).unwrap()), None::<Hereditary<f64>>));
+        let f64_scene = Scene::new(contact::<f64>(&raw), (Some(Viscous::optional(zeta).unwrap()), None::<Hereditary<f64>>));
         prop_assert!(f64_scene.is_ok(), "a realistic scene was refused: {:?}", f64_scene.err());
         check::<f64>(&raw)?;
         check::<f32>(&raw)?;

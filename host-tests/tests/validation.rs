@@ -249,7 +249,44 @@ fn damping_ratio_must_be_finite_and_non_negative() {
         Viscous::new(-1e-9),
         Err(Error::new(Parameter::DampingRatio, Reason::Negative))
     );
-    assert!(Viscous::new(0.0).is_ok());
+    // Zero is no viscous damping: `Undamped`, or `None` where it is chosen at run time, so that
+    // a scene typed `Viscous` is always damped (and links no undamped path).
+    assert_eq!(
+        Viscous::new(0.0),
+        Err(Error::new(Parameter::DampingRatio, Reason::NotPositive))
+    );
+    assert_eq!(
+        Viscous::new(-0.0),
+        Err(Error::new(Parameter::DampingRatio, Reason::NotPositive))
+    );
+    assert_eq!(Viscous::optional(0.0), Ok(None));
+    assert_eq!(Viscous::optional(-0.0), Ok(None));
+    assert_eq!(
+        Viscous::optional(-1e-9),
+        Err(Error::new(Parameter::DampingRatio, Reason::Negative))
+    );
+    assert_eq!(
+        Viscous::optional(f64::NAN).map_err(|e| e.reason()),
+        Err(Reason::NotANumber)
+    );
+    assert_eq!(
+        Viscous::optional(0.03).map(|v| v.map(|v| v.zeta())),
+        Ok(Some(0.03))
+    );
+    // A preload without damping: Preloaded is damped, so it names the parameter.
+    let undamped = contact_bounce::Preloaded {
+        mass: 5e-5,
+        stiffness: 5000.0,
+        preload_force: 1.0,
+        closing_speed: 0.5,
+        restitution: 0.7,
+        damping_ratio: 0.0,
+    };
+    assert_eq!(
+        undamped.scene().map(|_| ()),
+        Err(Error::new(Parameter::DampingRatio, Reason::NotPositive))
+    );
+    assert!(Scene::new(undamped.contact(), contact_bounce::Undamped).is_ok());
 }
 
 #[test]
@@ -820,7 +857,7 @@ fn a_first_impulse_below_the_floor_is_refused() {
         closing_speed: 1e-30,
         threshold: Threshold::None,
     };
-    let e = Scene::new(contact, Viscous::new(0.0).expect("valid")).expect_err("refused");
+    let e = Scene::new(contact, contact_bounce::Undamped).expect_err("refused");
     assert_eq!(
         (e.parameter(), e.reason()),
         (Parameter::ClosingSpeed, Reason::Overflow)
@@ -847,5 +884,5 @@ fn a_first_impulse_below_the_floor_is_refused() {
         closing_speed: 1e-30,
         threshold: Threshold::None,
     };
-    assert!(Scene::new(wide, Viscous::new(0.0).expect("valid")).is_ok());
+    assert!(Scene::new(wide, contact_bounce::Undamped).is_ok());
 }

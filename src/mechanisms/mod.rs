@@ -149,8 +149,9 @@ impl<F: Float> Asymptote<F> {
 /// [`Viscous`], [`Hereditary`], tuples and `Option`s of them).
 pub trait Dissipation<F: Float>: sealed::Sealed + Copy + Debug {
     /// True for a type that never dissipates whatever its value ([`Undamped`]): code for the
-    /// other mechanisms is then left out at compile time (a `Viscous` of zeta 0 is undamped
-    /// only at run time, and takes the general paths).
+    /// other mechanisms is then left out at compile time. ([`Viscous`] is the converse: it
+    /// always dissipates, zeta > 0 being checked when it is built, so a `Viscous` scene links
+    /// none of the undamped paths.)
     const NEVER_DISSIPATES: bool = false;
     /// The viscous damping ratio zeta (0 without viscous damping): it decides the
     /// single-impact regime (zeta >= 1 with Delta >= 0).
