@@ -499,9 +499,12 @@ pub(crate) fn exact_discrete<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -
     let zeta = scene.dissipation().damping_ratio();
     let omega = scene.omega();
     let loss_decay = -(-scene.loss()).ln_1p();
-    let grazing_damped = scene.delta() == F::ZERO && zeta > F::ZERO;
+    // Its callers send a scene that dissipates here only with Delta = 0, so a mechanism that
+    // always dissipates ([`Viscous`](crate::Viscous)) is grazing at compile time, and its
+    // firmware links none of the undamped sums below.
+    let grazing = scene.dissipation().dissipates() || scene.delta() == F::ZERO;
     // Per-impact decay of the impulse, and (Delta = 0 only) the constant flight time.
-    let (decay, grazing_flight) = if scene.delta() == F::ZERO {
+    let (decay, grazing_flight) = if grazing {
         let damped = omega * (F::ONE - zeta * zeta).sqrt();
         (
             loss_decay + zeta * omega * F::PI / damped,
@@ -514,8 +517,9 @@ pub(crate) fn exact_discrete<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -
         Some(flight) => n * flight,
         None => scene.undamped_flights_until(n),
     };
+    // Only a preload accumulates (Delta = 0 decays without end).
     let end_time = match scene.regime() {
-        Regime::ZenoAccumulation => scene
+        Regime::ZenoAccumulation if !grazing => scene
             .undamped_accumulation_time()
             .map_or(Time::Never, Time::At),
         _ => Time::Never,
@@ -540,7 +544,7 @@ pub(crate) fn exact_discrete<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -
             impacts_above,
             impacts_total: Count::Infinite,
         },
-        Tier::Closed(if grazing_damped || scene.delta() == F::ZERO {
+        Tier::Closed(if grazing {
             ClosedForm::Grazing
         } else {
             ClosedForm::Undamped
