@@ -392,17 +392,21 @@ impl Float for f32 {
         libm::ceilf(self)
     }
     fn ceil_u32(self) -> Option<u32> {
-        let up = libm::ceilf(self);
-        // 4_294_967_040 = 2^32 - 256 is the largest f32 not above u32::MAX.
-        if (0.0..=4_294_967_040.0).contains(&up) {
-            // In range and integral: the conversion is exact.
+        // 4_294_967_040 = 2^32 - 256 is the largest f32 not above u32::MAX; above -1 the
+        // ceiling is 0 or more. (NaN fails both.)
+        if self > -1.0 && self <= 4_294_967_040.0 {
+            // Truncated toward zero (-0.x to 0): exact, as every f32 at or above 2^23 is an
+            // integer. Below 2^24 the truncation converts back exactly, so the comparison
+            // says whether a fraction was cut; above, there is none. No `ceilf` linked.
             #[allow(
                 clippy::cast_possible_truncation,
                 clippy::cast_sign_loss,
                 clippy::as_conversions
             )]
-            let n = up as u32;
-            Some(n)
+            let n = self as u32;
+            #[allow(clippy::cast_precision_loss, clippy::as_conversions)]
+            let cut = (n as f32) < self;
+            Some(n + u32::from(cut))
         } else {
             None
         }
@@ -619,6 +623,64 @@ mod tests {
         assert_eq!(5e9_f32.ceil_u32(), None);
         assert_eq!((-1.0_f32).ceil_u32(), None);
         assert_eq!(f64::NAN.ceil_u32(), None);
+    }
+
+    /// The f32 ceiling without `ceilf` is libm's `ceilf` converted, with the same range: on
+    /// every 7th f32 from -1 to 2^25 (every binade, fractions and all), on the integers and
+    /// halves below 2^24 and their neighbours, at the ends of the range and on NaN and the
+    /// infinities.
+    #[test]
+    fn the_f32_ceiling_to_u32_is_ceilfs() {
+        let reference = |x: f32| {
+            let up = libm::ceilf(x);
+            #[allow(
+                clippy::cast_possible_truncation,
+                clippy::cast_sign_loss,
+                clippy::as_conversions
+            )]
+            (0.0..=4_294_967_040.0).contains(&up).then_some(up as u32)
+        };
+        let check = |x: f32| assert_eq!(x.ceil_u32(), reference(x), "{x:e}");
+        // -0 to -1, and +0 to 2^25.
+        (0x8000_0000_u32..=0xbf80_0000)
+            .step_by(7)
+            .for_each(|b| check(f32::from_bits(b)));
+        (0_u32..=0x4c00_0000)
+            .step_by(7)
+            .for_each(|b| check(f32::from_bits(b)));
+        for k in (0..16_777_216_u32).step_by(251) {
+            #[allow(clippy::cast_precision_loss, clippy::as_conversions)]
+            let x = k as f32;
+            for y in [x, x + 0.5] {
+                check(y);
+                check(f32::from_bits(y.to_bits() + 1));
+                if y > 0.0 {
+                    check(f32::from_bits(y.to_bits() - 1));
+                }
+            }
+        }
+        for x in [
+            -1.0_f32,
+            -0.999_999_9,
+            -0.5,
+            -0.0,
+            0.0,
+            1e-45,
+            0.5,
+            1.0,
+            8_388_607.5,
+            8_388_608.0,
+            16_777_215.0,
+            16_777_216.0,
+            4_294_967_040.0,
+            4_294_967_296.0,
+            f32::MAX,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::NAN,
+        ] {
+            check(x);
+        }
     }
 
     #[cfg(not(feature = "micromath"))]
