@@ -52,19 +52,43 @@ impl GridScene {
         self.core_in()
     }
 
-    fn core_in<F: Float>(&self) -> Result<Scene<F, Option<Viscous<F>>>, contact_bounce::Error> {
+    /// The core's scene typed `Viscous` (always damped: the type firmware with a damped switch
+    /// uses, whose code leaves the undamped paths out at compile time); `None` for zeta = 0.
+    ///
+    /// # Errors
+    /// When the core refuses the scene.
+    pub fn core_damped<F: Float>(
+        &self,
+    ) -> Option<Result<Scene<F, Viscous<F>>, contact_bounce::Error>> {
+        (self.reference.zeta != 0.0).then(|| {
+            Scene::new(
+                self.contact(),
+                Viscous::new(F::from_f64(self.reference.zeta))?,
+            )
+        })
+    }
+
+    fn contact<F: Float>(&self) -> Contact<F> {
         let r = &self.reference;
+        Contact {
+            frequency: Frequency::Omega(F::from_f64(r.omega)),
+            offset: Offset::Delta(F::from_f64(r.delta)),
+            restitution: Restitution::Loss(F::from_f64(1.0 - r.restitution)),
+            closing_speed: F::from_f64(r.closing_speed),
+            threshold: r
+                .threshold
+                .map_or(Threshold::None, |p| Threshold::Impulse(F::from_f64(p))),
+        }
+    }
+
+    /// The core's scene as [`GridScene::core`] builds it, in either float.
+    ///
+    /// # Errors
+    /// When the core refuses the scene.
+    pub fn core_in<F: Float>(&self) -> Result<Scene<F, Option<Viscous<F>>>, contact_bounce::Error> {
         Scene::new(
-            Contact {
-                frequency: Frequency::Omega(F::from_f64(r.omega)),
-                offset: Offset::Delta(F::from_f64(r.delta)),
-                restitution: Restitution::Loss(F::from_f64(1.0 - r.restitution)),
-                closing_speed: F::from_f64(r.closing_speed),
-                threshold: r
-                    .threshold
-                    .map_or(Threshold::None, |p| Threshold::Impulse(F::from_f64(p))),
-            },
-            Viscous::optional(F::from_f64(r.zeta))?,
+            self.contact(),
+            Viscous::optional(F::from_f64(self.reference.zeta))?,
         )
     }
 }
