@@ -25,7 +25,10 @@ for example in uno uno_learn uno_auto; do
   elf=target/avr-none/release/examples/$example.elf
   avr-size "$elf"
   read -r text data bss _ < <(avr-size "$elf" | tail -n 1)
-  stack=$("$tmp/simavr-stack" "$elf" 2> /dev/null | tail -n 1)
+  if ! stack=$("$tmp/simavr-stack" "$elf" 2> /dev/null | tail -n 1) || ! [[ $stack =~ ^[0-9]+$ ]]; then
+    echo "FAIL: $example: its stack peak could not be measured (it did not finish in 2e9 cycles)" >&2
+    exit 1
+  fi
   # The ATmega328P: 32 KB of flash (.text and .data's initial values), 2 KB of RAM.
   echo "$example: flash $((text + data)) of 32768 bytes; RAM $((data + bss)) (.data, .bss) + $stack (stack peak) = $((data + bss + stack)) of 2048 bytes"
   if [ $((data + bss + stack)) -gt 2048 ] || [ $((text + data)) -gt 32768 ]; then
