@@ -13,19 +13,19 @@ avr_toolchain "the Uno check"
 
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-# The stack's peak (tools/simavr-stack.c, libsimavr): a run that takes the stack down into
+# The stack's peak (tools/simavr-cycles.c, libsimavr): a run that takes the stack down into
 # .data and .bss would overwrite them without a fault.
 if [ ! -f /usr/include/simavr/sim_avr.h ]; then
   apt-get update -qq
   DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends libsimavr-dev >/dev/null
 fi
-gcc -O2 -o "$tmp/simavr-stack" tools/simavr-stack.c -lsimavr
+gcc -O2 -o "$tmp/simavr-cycles" tools/simavr-cycles.c -lsimavr
 for example in uno uno_learn uno_auto; do
   cargo +nightly build --quiet --release --example "$example" --target avr-none -Zbuild-std=core
   elf=target/avr-none/release/examples/$example.elf
   avr-size "$elf"
   read -r text data bss _ < <(avr-size "$elf" | tail -n 1)
-  if ! stack=$("$tmp/simavr-stack" "$elf" 2> /dev/null | tail -n 1) || ! [[ $stack =~ ^[0-9]+$ ]]; then
+  if ! stack=$("$tmp/simavr-cycles" "$elf" 2> /dev/null | sed -n 's/^stack //p') || ! [[ $stack =~ ^[0-9]+$ ]]; then
     echo "FAIL: $example: its stack peak could not be measured (it did not finish in 2e9 cycles)" >&2
     exit 1
   fi
