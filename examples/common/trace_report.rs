@@ -91,14 +91,15 @@ fn run_scene<D: Dissipation<f32>>(
     // The bounce in whole nanoseconds, and the expected error in parts per million.
     let ns = p.bounce_time().and_then(|t| (t * 1e9).ceil_u32());
     let ppm = p.expected_error.and_then(|e| (e * 1e6).ceil_u32());
-    writeln!(
-        out,
-        "auto 10 %: {} ({}), bounce {} ns, expected error {} ppm",
-        p.tier.name(),
-        p.regime.name(),
-        ns.unwrap_or(0),
-        ppm.unwrap_or(0)
-    )?;
+    write!(out, "auto 10 %: {} ({}), ", p.tier.name(), p.regime.name())?;
+    match ns {
+        Some(ns) => write!(out, "bounce {ns} ns")?,
+        None => write!(out, "bounce beyond 2^32 ns")?,
+    }
+    match ppm {
+        Some(ppm) => writeln!(out, ", expected error {ppm} ppm")?,
+        None => writeln!(out, ", no expected error")?,
+    }
     for (label, ticks, mode) in [
         ("physics confirm", window, Mode::Confirm),
         ("physics hold-off", window, Mode::HoldOff),
