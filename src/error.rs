@@ -222,11 +222,12 @@ pub const PHYSICAL_RANGE: (f64, f64) = (1e-30, 1e30);
 /// elsewhere (2 KB more, past the Uno's 32 KB), so there the choice stays the compiler's.
 #[cfg_attr(not(target_arch = "avr"), inline(never))]
 pub(crate) fn physical<F: crate::Float>(value: F, parameter: Parameter) -> Result<F, Error> {
-    let value = positive(value, parameter)?;
-    if value < F::from_f64(PHYSICAL_RANGE.0) || value > F::from_f64(PHYSICAL_RANGE.1) {
-        return Err(Error::new(parameter, Reason::OutOfRange));
+    if value.within_positive(F::from_f64(PHYSICAL_RANGE.0), F::from_f64(PHYSICAL_RANGE.1)) {
+        return Ok(value);
     }
-    Ok(value)
+    // Outside: say why (NaN, infinite, not positive), else out of range.
+    positive(value, parameter)?;
+    Err(Error::new(parameter, Reason::OutOfRange))
 }
 
 /// Checks that a value is finite and >= 0.
