@@ -81,7 +81,7 @@ enum Answer {
 }
 
 fn answer(input: &SceneInput, tolerance: Tolerance<f64>) -> Result<Answer, FieldError> {
-    let p = input.core::<f64>()?.predict(Method::Auto(tolerance));
+    let p = input.predict::<f64>(Method::Auto(tolerance))?;
     if p.promises(tolerance) {
         Ok(Answer::Model(p))
     } else {
@@ -93,19 +93,39 @@ impl Answer {
     /// The bounce time, its upper bound, and whether the exact reference gave it.
     fn bounds(&self) -> Result<(f64, f64, bool), FieldError> {
         match self {
-            Self::Model(p) => {
-                let bounce = p.bounce_time().ok_or_else(endless)?;
-                Ok((
-                    bounce,
-                    bounce * (1.0 + p.expected_error.unwrap_or(0.0)),
-                    false,
-                ))
-            }
-            Self::Exact(out) => {
-                let bounce = out.end_time.or(out.last_above_time).ok_or_else(endless)?;
-                Ok((bounce, bounce, true))
-            }
+            Self::Model(p) => model_bounds(p),
+            Self::Exact(out) => exact_bounds(out),
         }
+    }
+}
+
+fn model_bounds(p: &Prediction<f64>) -> Result<(f64, f64, bool), FieldError> {
+    let bounce = p.bounce_time().ok_or_else(endless)?;
+    Ok((
+        bounce,
+        bounce * (1.0 + p.expected_error.unwrap_or(0.0)),
+        false,
+    ))
+}
+
+fn exact_bounds(out: &contact_bounce_reference::Outcome) -> Result<(f64, f64, bool), FieldError> {
+    let bounce = out.end_time.or(out.last_above_time).ok_or_else(endless)?;
+    Ok((bounce, bounce, true))
+}
+
+/// [`Answer::bounds`] of the scene's answer, without keeping the answer: a Monte Carlo sample's
+/// path (the prediction is read where it was made, not moved into an `Answer`).
+fn answer_bounds(
+    input: &SceneInput,
+    tolerance: Tolerance<f64>,
+) -> Result<(f64, f64, bool), FieldError> {
+    let promised = input.with_core::<f64, _>(|scene| {
+        let p = scene.predict(Method::Auto(tolerance));
+        p.promises(tolerance).then(|| model_bounds(&p))
+    })?;
+    match promised {
+        Some(bounds) => bounds,
+        None => exact_bounds(&exact_outcome(input)?),
     }
 }
 
@@ -231,7 +251,7 @@ fn monte_carlo(template: &Template, settings: &Settings) -> Result<MonteCarlo, F
         let mut i = u64::try_from(k).unwrap_or(u64::MAX);
         while i < n {
             template.sample_into(settings.seed, i, &mut scene);
-            let (bounce, upper, by_reference) = answer(&scene, tolerance)?.bounds()?;
+            let (bounce, upper, by_reference) = answer_bounds(&scene, tolerance)?;
             bounces.push(bounce);
             uppers.push(upper);
             exact += u64::from(by_reference);

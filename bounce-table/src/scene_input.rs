@@ -486,6 +486,28 @@ impl SceneInput {
     pub fn core<F: contact_bounce::Float>(
         &self,
     ) -> Result<Scene<F, AnyDissipation<F>>, FieldError> {
+        self.with_core(|scene| *scene)
+    }
+
+    /// The scene's prediction by `method` (as [`SceneInput::core`], then `predict`, without
+    /// moving the scene out: the Monte Carlo's path).
+    ///
+    /// # Errors
+    /// As [`SceneInput::core`].
+    pub fn predict<F: contact_bounce::Float>(
+        &self,
+        method: contact_bounce::Method<F>,
+    ) -> Result<contact_bounce::Prediction<F>, FieldError> {
+        self.with_core(|scene| scene.predict(method))
+    }
+
+    /// `f` of the core's scene, used where it was built: a `Scene` is a couple of hundred bytes,
+    /// and each `?` or `map_err` it passed through by value was a copy (a quarter of a Monte
+    /// Carlo sample's time went to them).
+    pub(crate) fn with_core<F: contact_bounce::Float, R>(
+        &self,
+        f: impl FnOnce(&Scene<F, AnyDissipation<F>>) -> R,
+    ) -> Result<R, FieldError> {
         // A value the float cannot hold (it would round to 0, to a subnormal or to inf) is an
         // error naming its field: "mass must be > 0" for a mass of 1e-300 in f32 would name
         // the right field but the wrong fault.
@@ -525,19 +547,7 @@ impl SceneInput {
         };
         let restitution = Restitution::Coefficient(c("restitution", self.restitution)?);
         let v0 = c("closing_speed", self.closing_speed)?;
-        let one_body = |frequency: Frequency<F>| -> Result<_, FieldError> {
-            let viscous = Viscous::optional(c("damping_ratio", self.damping_ratio)?)
-                .map_err(|e| self.fault(e))?;
-            let contact = Contact {
-                frequency,
-                offset,
-                restitution,
-                closing_speed: v0,
-                threshold,
-            };
-            Scene::new(contact, (viscous, kernel)).map_err(|e| self.fault(e))
-        };
-        let scene = match self.spring {
+        let frequency = match self.spring {
             Spring::TwoBody(b, _, _) => {
                 let bodies = TwoBody {
                     m1: c("two_body.m1", b.m1)?,
@@ -547,16 +557,30 @@ impl SceneInput {
                     c2: c("two_body.c2", b.c2)?,
                     d2: c("two_body.d2", b.d2)?,
                 };
-                Scene::two_body(bodies, offset, restitution, v0, threshold, kernel)
-                    .map_err(|e| self.fault(e))?
+                return match Scene::two_body(bodies, offset, restitution, v0, threshold, kernel) {
+                    Ok(scene) => Ok(f(&scene)),
+                    Err(e) => Err(self.fault(e)),
+                };
             }
-            Spring::Omega(w) => one_body(Frequency::Omega(c("omega", w)?))?,
-            Spring::MassStiffness(m, k) => one_body(Frequency::MassStiffness {
+            Spring::Omega(w) => Frequency::Omega(c("omega", w)?),
+            Spring::MassStiffness(m, k) => Frequency::MassStiffness {
                 mass: c("mass", m)?,
                 stiffness: c("stiffness", k)?,
-            })?,
+            },
         };
-        Ok(scene)
+        let viscous = Viscous::optional(c("damping_ratio", self.damping_ratio)?)
+            .map_err(|e| self.fault(e))?;
+        let contact = Contact {
+            frequency,
+            offset,
+            restitution,
+            closing_speed: v0,
+            threshold,
+        };
+        match Scene::new(contact, (viscous, kernel)) {
+            Ok(scene) => Ok(f(&scene)),
+            Err(e) => Err(self.fault(e)),
+        }
     }
 }
 
