@@ -360,7 +360,8 @@ impl Float for f32 {
     #[inline]
     fn ln_1p_ratio(self) -> Self {
         // Kahan's form: with u = 1 + x rounded, ln(u) / (u - 1) is ln(1 + y) / y at y = u - 1
-        // (exact), within an ULP of the ratio at x, since ln(1 + y) / y changes slowly.
+        // (exact), and ln(1 + y) / y changes slowly: within 3 ULP of f64's log1p(x) / x, as
+        // the two-division form (tested below).
         let u = 1.0 + self;
         if u == 1.0 {
             1.0
