@@ -502,8 +502,8 @@ impl SceneInput {
     }
 
     /// `f` of the core's scene, used where it was built: a `Scene` is a couple of hundred bytes,
-    /// and each `?` or `map_err` it passed through by value was a copy (a quarter of a Monte
-    /// Carlo sample's time went to them).
+    /// and each `?` or `map_err` it passed through by value was a copy (about a fifth of a
+    /// Monte Carlo sample's time went to them).
     pub(crate) fn with_core<F: contact_bounce::Float, R>(
         &self,
         f: impl FnOnce(&Scene<F, AnyDissipation<F>>) -> R,
