@@ -8,7 +8,7 @@
 //! asymptote of E1 (docs/physics.md sec. 4) is integrated in closed form: its relative error there
 //! is O(cutoff), on a tail that is itself O(cutoff) of the total.
 
-use crate::error::{derived, non_negative, Error, Parameter, Reason};
+use crate::error::{non_negative, normal, Error, Parameter, Reason};
 use crate::mechanisms::Dissipation;
 use crate::prediction::{Approximations, Count, Course, Prediction, Tier, Time};
 use crate::quadrature::{integrate_exp, panel, Nodes, MAX_PANELS, PANEL_WIDTH};
@@ -47,7 +47,8 @@ use crate::{accuracy, Float, Scene};
 /// [`Parameter::Restitution`] outside [1e-6, 1 - 1e-12]; [`Parameter::ClosingSpeed`] with
 /// [`Reason::Overflow`] for a first impulse below [`Scene::impulse_floor`] or Omega (1 + R) v0
 /// above the float's largest value over 2^17; [`Parameter::PreloadForce`] with
-/// [`Reason::Overflow`] when the time leaves the float's range.
+/// [`Reason::Overflow`] when the time is not a normal number of the float (it overflowed, or
+/// underflowed below the smallest normal number).
 pub fn preload_restitution_bounce_seconds<F: Float>(
     mass: F,
     stiffness: F,
@@ -65,7 +66,7 @@ pub fn preload_restitution_bounce_seconds<F: Float>(
     )?;
     // J_B / |q| = j0 / 2.
     let integral = crate::quadrature::inverse_tangent_integral(p.j0 * F::HALF);
-    derived(
+    normal(
         F::TWO * integral / p.loss * p.inverse_omega,
         Parameter::PreloadForce,
     )

@@ -4,7 +4,7 @@
 //! one to expect on this scene (`None` outside every stated validity), so a caller knows when
 //! to trust it. A form that does not apply to the scene's regime returns `None`.
 
-use crate::error::{derived, Error, Parameter};
+use crate::error::{normal, Error, Parameter};
 use crate::float::{log_growth, log_growth_of_ratio};
 use crate::mechanisms::{offset_class, Dissipation, OffsetClass};
 use crate::prediction::{Approximations, ClosedForm, Count, Course, Prediction, Tier, Time};
@@ -63,8 +63,8 @@ impl<F: Float> Estimate<F> {
 /// [1e-6, 1 - 1e-12]; [`Parameter::DampingRatio`] negative, below 1e-12 but not 0, or above
 /// 1e3; [`Parameter::ClosingSpeed`] with [`Reason::Overflow`](crate::Reason::Overflow) for a first impulse below
 /// [`Scene::impulse_floor`] or Omega (1 + R) v0 above the float's largest value over 2^17;
-/// [`Parameter::PreloadForce`] with [`Reason::Overflow`](crate::Reason::Overflow) when the time leaves the float's
-/// range.
+/// [`Parameter::PreloadForce`] with [`Reason::Overflow`](crate::Reason::Overflow) when the time is not a normal
+/// number of the float (it overflowed, or underflowed below the smallest normal number).
 pub fn preload_viscous_bounce_time<F: Float>(
     mass: F,
     stiffness: F,
@@ -152,7 +152,7 @@ fn lean_tb1v<F: Float>(
     )?;
     let time = log_growth_of_ratio(p.j0, p.loss, p.zeta * F::from_f64(2.0 / 3.0)) * p.inverse_omega;
     Ok(LeanTb1v {
-        time: derived(time, Parameter::PreloadForce)?,
+        time: normal(time, Parameter::PreloadForce)?,
         j0: p.j0,
         restitution: p.restitution,
         zeta: p.zeta,

@@ -240,6 +240,18 @@ pub(crate) fn non_negative<F: crate::Float>(value: F, parameter: Parameter) -> R
     }
 }
 
+/// Checks that a result is a normal number of the float (else it overflowed, or underflowed
+/// to a value with fewer significant bits than the float), blaming `parameter`. (A float
+/// comparison, not [`Float::within_positive`](crate::Float::within_positive): a caller's
+/// later `value > 0` then folds away.)
+pub(crate) fn normal<F: crate::Float>(value: F, parameter: Parameter) -> Result<F, Error> {
+    if value >= F::MIN_POSITIVE && value.is_finite() {
+        Ok(value)
+    } else {
+        Err(Error::new(parameter, Reason::Overflow))
+    }
+}
+
 /// Checks that a derived quantity is finite and > 0 (else the combination overflowed or
 /// underflowed), blaming `parameter`.
 pub(crate) fn derived<F: crate::Float>(value: F, parameter: Parameter) -> Result<F, Error> {

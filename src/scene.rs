@@ -473,8 +473,9 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
     /// impulse; a preload force without a stiffness; an [`Regime::Endless`] regime with no
     /// threshold ([`Reason::Required`]); combinations that overflow ([`Reason::Overflow`]),
     /// among them Omega (1 + R) v0 above the float's largest value over 2^17 (the acceleration
-    /// scale no tier can follow) and a first impulse 2 R v0 below [`Scene::impulse_floor`]
-    /// (both named the closing speed).
+    /// scale no tier can follow), a first impulse 2 R v0 below [`Scene::impulse_floor`] and a
+    /// preload whose first flight 2 R v0 / (Omega^2 |Delta|) is below the float's smallest
+    /// normal number (all named the closing speed).
     pub fn new(contact: Contact<F>, dissipation: D) -> Result<Self, Error> {
         Self::build(contact, dissipation, None)
     }
@@ -558,6 +559,18 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         // normal number, and no tier could resolve the flights (f32: a closing speed of 1e-30
         // m/s against 2 Omega |Delta| = 6e13 m/s gave NaN).
         if F::TWO * restitution * closing_speed < impulse_floor(&orbit) {
+            return Err(Error::new(Parameter::ClosingSpeed, Reason::Overflow));
+        }
+        // A preload's first flight, about J_B / (Omega^2 |Delta|) for a small impulse, is the
+        // shortest time the model forms and bounds every time of the bounce from below: where
+        // it is not a normal number, the times keep fewer significant bits than the float
+        // (f32: a bounce of 6.6e-42 s held to 2e-4). Multiplied out, not divided (Omega^2
+        // |Delta| is a normal number, checked above; where it is below 1, J_B above the
+        // impulse floor already keeps the flight normal).
+        if delta < F::ZERO
+            && F::TWO * restitution * closing_speed
+                < F::MIN_POSITIVE * (omega * omega * delta.abs())
+        {
             return Err(Error::new(Parameter::ClosingSpeed, Reason::Overflow));
         }
         if let Some(p_end) = threshold {

@@ -695,6 +695,72 @@ fn the_lean_t_b1v_agrees_with_the_scenes_and_refuses_what_the_scene_refuses() {
 }
 
 #[test]
+fn a_bounce_shorter_than_the_smallest_normal_float_is_refused() {
+    // f32: a 6.6e-30 kg contact at Omega 2.6e11 rad/s, preloaded 0.86 m, closing at 4.2e-17
+    // m/s with R 0.0046: its first flight, 2 R v0 / (Omega^2 |Delta|), is 6.6e-42 s, a
+    // subnormal f32 with 12 significant bits (every tier answered 6.623e-42 s, 2e-4 from the
+    // f64 answer, beyond the f32 rounding the exact tier states). Refused, naming the closing
+    // speed; the lean paths refuse the time itself (not a normal number). In f64 the same
+    // scene is fine and agrees with the closed form.
+    use contact_bounce::tiers::{preload_restitution_bounce_seconds, preload_viscous_bounce_time};
+    let (m, k, f, v, r, z) = (
+        6.616_427e-30,
+        4.555_134_6e-7,
+        3.899_010_3e-7,
+        4.216_672e-17,
+        0.004_606_765,
+        0.008_416_908,
+    );
+    fn preloaded<F: contact_bounce::Float>(m: F, k: F, f: F, v: F, r: F, z: F) -> Contact<F> {
+        contact_bounce::Preloaded {
+            mass: m,
+            stiffness: k,
+            preload_force: f,
+            closing_speed: v,
+            restitution: r,
+            damping_ratio: z,
+        }
+        .contact()
+    }
+    #[allow(clippy::cast_possible_truncation)]
+    let narrow = |x: f64| x as f32;
+    let (mf, kf, ff, vf, rf, zf) = (
+        narrow(m),
+        narrow(k),
+        narrow(f),
+        narrow(v),
+        narrow(r),
+        narrow(z),
+    );
+    let scene = Scene::new(
+        preloaded(mf, kf, ff, vf, rf, zf),
+        Viscous::new(zf).expect("valid"),
+    );
+    assert_eq!(
+        scene.map(|_| ()),
+        Err(Error::new(Parameter::ClosingSpeed, Reason::Overflow))
+    );
+    let lean = preload_viscous_bounce_time(mf, kf, ff, vf, rf, zf).map(|_| ());
+    assert_eq!(
+        lean,
+        Err(Error::new(Parameter::PreloadForce, Reason::Overflow))
+    );
+    let lean = preload_restitution_bounce_seconds(mf, kf, ff, vf, rf).map(|_| ());
+    assert_eq!(
+        lean,
+        Err(Error::new(Parameter::PreloadForce, Reason::Overflow))
+    );
+    let wide = Scene::new(preloaded(m, k, f, v, r, z), Viscous::new(z).expect("valid"))
+        .expect("normal in f64");
+    let t_b1v = wide.t_b1v().expect("a preload").time;
+    let lean = preload_viscous_bounce_time(m, k, f, v, r, z)
+        .expect("normal in f64")
+        .time;
+    assert!((t_b1v / 6.623_237_8e-42 - 1.0).abs() < 1e-6, "{t_b1v:e}");
+    assert!((lean / t_b1v - 1.0).abs() < 1e-12);
+}
+
+#[test]
 fn the_lean_t_b1v_alone_is_the_estimates_time_at_every_scale() {
     // m / k from 1e-58 to 1e58: inside f32's normal range one square root serves (of m / k),
     // outside it two (of m and of k); both agree with the f64 scene's t_b1v to f32's rounding,
