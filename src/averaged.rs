@@ -66,10 +66,8 @@ pub fn preload_restitution_bounce_seconds<F: Float>(
     )?;
     // J_B / |q| = j0 / 2.
     let integral = crate::quadrature::inverse_tangent_integral(p.j0 * F::HALF);
-    normal(
-        F::TWO * integral / p.loss * p.inverse_omega,
-        Parameter::PreloadForce,
-    )
+    let time = F::TWO * integral / p.loss * p.inverse_omega;
+    normal(time, Parameter::PreloadForce).map(|()| time)
 }
 
 /// The averaged model of a scene, integrated with a given number of nodes per panel.

@@ -152,7 +152,7 @@ fn lean_tb1v<F: Float>(
     )?;
     let time = log_growth_of_ratio(p.j0, p.loss, p.zeta * F::from_f64(2.0 / 3.0)) * p.inverse_omega;
     Ok(LeanTb1v {
-        time: normal(time, Parameter::PreloadForce)?,
+        time: normal(time, Parameter::PreloadForce).map(|()| time)?,
         j0: p.j0,
         restitution: p.restitution,
         zeta: p.zeta,

@@ -244,9 +244,9 @@ pub(crate) fn non_negative<F: crate::Float>(value: F, parameter: Parameter) -> R
 /// to a value with fewer significant bits than the float), blaming `parameter`. (A float
 /// comparison, not [`Float::within_positive`](crate::Float::within_positive): a caller's
 /// later `value > 0` then folds away.)
-pub(crate) fn normal<F: crate::Float>(value: F, parameter: Parameter) -> Result<F, Error> {
+pub(crate) fn normal<F: crate::Float>(value: F, parameter: Parameter) -> Result<(), Error> {
     if value >= F::MIN_POSITIVE && value.is_finite() {
-        Ok(value)
+        Ok(())
     } else {
         Err(Error::new(parameter, Reason::Overflow))
     }

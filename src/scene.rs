@@ -13,7 +13,7 @@ pub use crate::mechanisms::{AnyDissipation, Dissipation, Hereditary, Undamped, V
 pub use crate::preloaded::Preloaded;
 pub use crate::regime::Regime;
 
-use crate::error::{derived, finite, non_negative, physical, Error, Parameter, Reason};
+use crate::error::{derived, finite, non_negative, normal, physical, Error, Parameter, Reason};
 use crate::mechanisms::{restitution::restitution_asymptote, restitution_rate, Asymptote};
 use crate::orbit::{Orbit, OrbitPoint};
 use crate::Float;
@@ -261,17 +261,10 @@ fn check_regime_scale<F: Float>(
     (loss, restitution_given): (F, Parameter),
     delta: F,
 ) -> Result<(), Error> {
-    let normal = |value: F, parameter: Parameter| {
-        if value >= F::MIN_POSITIVE && value.is_finite() {
-            Ok(())
-        } else {
-            Err(Error::new(parameter, Reason::Overflow))
-        }
-    };
-    match regime {
-        Regime::ZenoAccumulation => normal(asymptote.constant, restitution_given),
-        Regime::LastImpact if kernel => normal(asymptote.inverse, Parameter::KernelAmplitude),
-        Regime::LastImpact => normal(asymptote.inverse, Parameter::DampingRatio),
+    let scale = match regime {
+        Regime::ZenoAccumulation => (asymptote.constant, restitution_given),
+        Regime::LastImpact if kernel => (asymptote.inverse, Parameter::KernelAmplitude),
+        Regime::LastImpact => (asymptote.inverse, Parameter::DampingRatio),
         // An endless decay without a kernel is exponential at small J: its rate must be
         // normal too (a subnormal zeta would make J / |E1| infinite).
         Regime::Endless if !kernel => {
@@ -280,10 +273,11 @@ fn check_regime_scale<F: Float>(
             } else {
                 Parameter::DampingRatio
             };
-            normal(asymptote.linear, culprit)
+            (asymptote.linear, culprit)
         }
-        _ => Ok(()),
-    }
+        _ => return Ok(()),
+    };
+    normal(scale.0, scale.1)
 }
 
 /// See [`Scene::impulse_floor`].
