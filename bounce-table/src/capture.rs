@@ -674,6 +674,9 @@ pub struct Description {
     pub bursts: usize,
     /// How many of `flights` belong to the first burst.
     pub first_burst_flights: usize,
+    /// The burst gap the event was described at (s): an event with more than one burst has a
+    /// quiet interval at least this long inside, so its bounce is never shorter.
+    pub burst_gap: f64,
     /// A press only: the longest closed dwell of the first burst after which the contact
     /// opens again, as a share of the burst's longest resolved flight (see [`Hold`]).
     pub hold: Option<Hold>,
@@ -735,6 +738,7 @@ impl Event {
             timed: bounce >= resolution,
             transitions: self.changes.len(),
             first_burst_flights: first_burst_flights.unwrap_or(flights.len()),
+            burst_gap,
             flights,
             dwells,
             chatter,

@@ -277,12 +277,13 @@ fn normal(rng: &mut SplitMix) -> f64 {
 
 #[test]
 fn the_fitted_model_recovers_a_known_mixture_of_clean_edges_bursts_and_late_bursts() {
-    // 30 % clean, 50 % one burst log-normal (100 us x/ e^0.5), 20 % late burst log-normal
-    // (50 ms x/ e^0.3): the late ones settle for at least 5 ms, the gap (their shortest bounce
-    // is 7.7 standard deviations below the median).
+    // 30 % clean, 50 % one burst log-normal (100 us x/ e^0.5), 20 % late burst: the gap
+    // (5 ms) plus a log-normal excess (45 ms x/ e^0.3), settling for at least the gap (the
+    // late burst's last interval starts 50 us before its end, and the excess is at least
+    // that: 9.1e-4 of its median is 23 standard deviations below it).
     let (n, clean, single) = (4000, 0.3, 0.5);
     let (burst_mu, burst_sigma) = ((100e-6_f64).ln(), 0.5);
-    let (late_mu, late_sigma) = ((50e-3_f64).ln(), 0.3);
+    let (late_mu, late_sigma) = ((45e-3_f64).ln(), 0.3);
     let mut rng = SplitMix(11);
     let events: Vec<Event> = (0..n)
         .map(|i| {
@@ -294,7 +295,7 @@ fn the_fitted_model_recovers_a_known_mixture_of_clean_edges_bursts_and_late_burs
                 let b = (burst_mu + burst_sigma * normal(&mut rng)).exp();
                 vec![t, t + b / 3.0, t + b]
             } else {
-                let b = (late_mu + late_sigma * normal(&mut rng)).exp();
+                let b = GAP + (late_mu + late_sigma * normal(&mut rng)).exp();
                 vec![t, t + 20e-6, t + 40e-6, t + b - 10e-6, t + b]
             };
             Event {
@@ -317,6 +318,10 @@ fn the_fitted_model_recovers_a_known_mixture_of_clean_edges_bursts_and_late_burs
     assert!((m.clean - clean).abs() <= share(clean), "{m:?}");
     assert!((m.single - single).abs() <= share(single), "{m:?}");
     assert!((m.late - 0.2).abs() <= share(0.2), "{m:?}");
+    assert_eq!(
+        (m.burst.unwrap().floor, m.late_bounce.unwrap().floor),
+        (0.0, GAP)
+    );
     for (fit, mu, sigma, p) in [
         (m.burst.unwrap(), burst_mu, burst_sigma, single),
         (m.late_bounce.unwrap(), late_mu, late_sigma, 0.2),
@@ -387,7 +392,12 @@ fn a_bounce_shorter_than_the_resolution_is_fitted_with_the_clean_edges() {
 
 #[test]
 fn the_mixture_quantile_is_the_inverse_of_its_distribution() {
-    let l = |mu: f64, sigma: f64| LogNormal { mu, sigma, n: 10 };
+    let l = |mu: f64, sigma: f64| LogNormal {
+        mu,
+        sigma,
+        floor: 0.0,
+        n: 10,
+    };
     // Clean 30 %, the rest one log-normal: the quantile is analytic. Standard normal points:
     // Phi(1) = 0.841344746068543, Phi(2.326347874040841) = 0.99.
     let m = BounceModel {

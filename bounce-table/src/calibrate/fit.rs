@@ -87,15 +87,22 @@ impl ImpactFit {
     }
 }
 
-/// A log-normal distribution fitted to positive durations: `mu` the mean of their logarithms
-/// (the maximum-likelihood estimate) and `sigma` their sample standard deviation (n - 1). Bounce durations are positive and spread over decades, which is what a log-normal
-/// describes; whether it describes a given capture is for the held-out check to say.
+/// A log-normal distribution fitted to durations above a known floor: `mu` the mean of the
+/// logarithms of their excess over the floor (the maximum-likelihood estimate) and `sigma`
+/// their sample standard deviation (n - 1). Bounce durations are positive and spread over
+/// decades, which is what a log-normal describes; whether it describes a given capture is for
+/// the held-out check to say. The floor is 0 for a burst; a late burst's bounce holds a quiet
+/// interval of at least the burst gap, so it is never shorter than the gap, and its log-normal
+/// is that of the excess over it (the three-parameter log-normal with its threshold known, not
+/// fitted).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LogNormal {
-    /// Mean of ln t (t in seconds).
+    /// Mean of ln (t - floor) (t in seconds).
     pub mu: f64,
-    /// Standard deviation of ln t (0 when every duration is the same).
+    /// Standard deviation of ln (t - floor) (0 when every duration is the same).
     pub sigma: f64,
+    /// No duration is shorter (s).
+    pub floor: f64,
     /// Durations fitted.
     pub n: usize,
 }
@@ -109,16 +116,31 @@ impl LogNormal {
     /// finite.
     #[must_use]
     pub fn fit(t: &[f64]) -> Option<Self> {
-        if t.len() < MIN_FIT || t.iter().any(|x| !(x.is_finite() && *x > 0.0)) {
+        Self::fit_above(t, 0.0)
+    }
+
+    /// The fit to `t` above `floor` (s); `None` with fewer than [`MIN_FIT`] durations, any
+    /// not finite or not above the floor, or a floor not finite and non-negative.
+    #[must_use]
+    pub fn fit_above(t: &[f64], floor: f64) -> Option<Self> {
+        if t.len() < MIN_FIT
+            || !(floor.is_finite() && floor >= 0.0)
+            || t.iter().any(|x| !(x.is_finite() && *x > floor))
+        {
             return None;
         }
         #[allow(clippy::cast_precision_loss)]
         let n = t.len() as f64;
-        let mu = t.iter().map(|x| x.ln()).sum::<f64>() / n;
-        let var = t.iter().map(|x| (x.ln() - mu).powi(2)).sum::<f64>() / (n - 1.0);
+        let mu = t.iter().map(|x| (x - floor).ln()).sum::<f64>() / n;
+        let var = t
+            .iter()
+            .map(|x| ((x - floor).ln() - mu).powi(2))
+            .sum::<f64>()
+            / (n - 1.0);
         Some(Self {
             mu,
             sigma: var.sqrt(),
+            floor,
             n: t.len(),
         })
     }
@@ -126,21 +148,31 @@ impl LogNormal {
     /// P(duration <= t).
     #[must_use]
     pub fn cdf(&self, t: f64) -> f64 {
-        if t <= 0.0 {
+        if t <= self.floor {
             return 0.0;
         }
-        let x = t.ln() - self.mu;
+        let x = (t - self.floor).ln() - self.mu;
         if self.sigma <= 0.0 {
             return if x >= 0.0 { 1.0 } else { 0.0 };
         }
         0.5 * libm::erfc(-x / (self.sigma * core::f64::consts::SQRT_2))
     }
 
-    /// The median, e^mu (s).
+    /// The median, floor + e^mu (s).
     #[must_use]
     pub fn median(&self) -> f64 {
-        self.mu.exp()
+        self.floor + self.mu.exp()
     }
+}
+
+/// ln(floor + e^x) without overflow (`floor` >= 0).
+fn ln_add_exp(floor: f64, x: f64) -> f64 {
+    if floor <= 0.0 {
+        return x;
+    }
+    let a = floor.ln();
+    let m = a.max(x);
+    m + ((a - m).exp() + (x - m).exp()).ln()
 }
 
 /// Maximum log-likelihood of a normal fitted to `x` (its spread floored at 1e-3 in ln t, a
@@ -229,7 +261,8 @@ pub fn reopening_threshold(one_burst: &[&capture::Description]) -> Option<f64> {
 ///   no contact time, a real contact dwells and chatters between flights); elsewhere the
 ///   observed burst durations;
 /// - a late burst (the contact bounced again after settling for at least the burst gap):
-///   log-normal in the event's whole bounce, with the share observed.
+///   log-normal in the event's whole bounce over the burst gap (which it holds, so is never
+///   shorter than), with the share observed.
 ///
 /// One-burst presses that reopen (a closed dwell comparable to the flights, then more bounce:
 /// the stuck pair of two bodies with unequal partial frequencies, [`capture::Hold`]) are a part
@@ -303,11 +336,19 @@ impl BounceModel {
             .iter()
             .filter(|x| !reopens(x, reopening))
             .collect();
-        let late: Vec<f64> = d
+        let late_events: Vec<_> = d.iter().filter(|x| bounces(x) && x.bursts > 1).collect();
+        let late: Vec<f64> = late_events.iter().map(|x| x.bounce).collect();
+        // The late bursts' floor: the least burst gap they were described at (one gap for
+        // all, as `calibrate` describes them).
+        let late_floor = late_events
             .iter()
-            .filter(|x| bounces(x) && x.bursts > 1)
-            .map(|x| x.bounce)
-            .collect();
+            .map(|x| x.burst_gap)
+            .fold(f64::INFINITY, f64::min);
+        let late_floor = if late_floor.is_finite() {
+            late_floor
+        } else {
+            0.0
+        };
         let closed_share = nearest_rank(
             &sorted(
                 single
@@ -343,14 +384,17 @@ impl BounceModel {
             single: share(single.len()),
             late: share(late.len()),
             burst: LogNormal::fit(&burst),
-            late_bounce: LogNormal::fit(&late),
+            late_bounce: LogNormal::fit_above(&late, late_floor),
             reopened: share(reopened.len()),
             reopened_bounce: LogNormal::fit(&reopened),
             reopening_dwell,
             reopening,
             impact,
             closed_share,
-            predictive: Predictive::fit(clean.len(), &[&burst, &reopened, &late]),
+            predictive: Predictive::fit(
+                clean.len(),
+                &[(&burst, 0.0), (&reopened, 0.0), (&late, late_floor)],
+            ),
         }
     }
 
@@ -399,9 +443,8 @@ impl BounceModel {
             - spread;
         let mut hi = parts
             .iter()
-            .map(|(_, l)| l.mu)
-            .fold(f64::NEG_INFINITY, f64::max)
-            + spread;
+            .map(|(_, l)| ln_add_exp(l.floor, l.mu + spread))
+            .fold(f64::NEG_INFINITY, f64::max);
         let at = |x: f64| self.clean + parts.iter().map(|(w, l)| w * l.cdf(x.exp())).sum::<f64>();
         for _ in 0..200 {
             if hi - lo <= 1e-12 * hi.abs().max(1.0) {

@@ -84,7 +84,18 @@ fn three(r: &[Option<f64>; 3]) -> String {
 fn lognormal_text(l: Option<LogNormal>) -> String {
     l.map_or_else(
         || "-".to_owned(),
-        |l| format!("{} x/ {:.2}", time(l.median()), l.sigma.exp()),
+        |l| {
+            if l.floor > 0.0 {
+                format!(
+                    "{} + {} x/ {:.2}",
+                    time(l.floor),
+                    time(l.mu.exp()),
+                    l.sigma.exp()
+                )
+            } else {
+                format!("{} x/ {:.2}", time(l.median()), l.sigma.exp())
+            }
+        },
     )
 }
 
@@ -101,8 +112,9 @@ pub fn assess(groups: &Groups<'_>, percentile: f64, seed: u64) -> String {
     );
     let mut model = String::from(
         "\n## Fitted bounce model\n\nEach event is clean, one burst, or bounces again after a quiet interval of at \
-         least the burst gap (a late burst); a bounce shorter than the resolution is not timed and counts as clean. Bursts and late-burst bounces are log-normal (median x/ geometric \
-         spread). The burst term is the impact model's (first flight / (1 - R), times 1 + the closed share: \
+         least the burst gap (a late burst); a bounce shorter than the resolution is not timed and counts as clean. Bursts are log-normal (median x/ geometric \
+         spread); a late burst holds a quiet interval of at least the burst gap, so its bounce is the gap plus a \
+         log-normal excess (gap + median x/ spread). The burst term is the impact model's (first flight / (1 - R), times 1 + the closed share: \
          the dwell and chatter a Newton impact does not have) where it holds, else the observed bursts'. \
          A press whose contact holds, inside its burst, for a dwell of at least a threshold share of its longest \
          flight and then opens again reopens: the stuck pair of two bodies with unequal partial frequencies, \
