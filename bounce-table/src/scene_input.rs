@@ -557,9 +557,10 @@ impl SceneInput {
                     c2: c("two_body.c2", b.c2)?,
                     d2: c("two_body.d2", b.d2)?,
                 };
-                return match Scene::two_body(bodies, offset, restitution, v0, threshold, kernel) {
-                    Ok(scene) => Ok(f(&scene)),
-                    Err(e) => Err(self.fault(e)),
+                // Matched by reference: bound by value, the scene is copied out of its `Result`.
+                return match &Scene::two_body(bodies, offset, restitution, v0, threshold, kernel) {
+                    Ok(scene) => Ok(f(scene)),
+                    Err(e) => Err(self.fault(*e)),
                 };
             }
             Spring::Omega(w) => Frequency::Omega(c("omega", w)?),
@@ -577,9 +578,9 @@ impl SceneInput {
             closing_speed: v0,
             threshold,
         };
-        match Scene::new(contact, (viscous, kernel)) {
-            Ok(scene) => Ok(f(&scene)),
-            Err(e) => Err(self.fault(e)),
+        match &Scene::new(contact, (viscous, kernel)) {
+            Ok(scene) => Ok(f(scene)),
+            Err(e) => Err(self.fault(*e)),
         }
     }
 }
