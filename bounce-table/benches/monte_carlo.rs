@@ -15,22 +15,26 @@
 //!
 //! | switch | draw before | draw | ratio | scene + prediction | prediction |
 //! |---|---:|---:|---:|---:|---:|
-//! | my tactile button (example.toml) | 1,702 | 204 | 8.3 | 171 | 71 |
-//! | MEMS micro-switch | 1,610 | 231 | 7.0 | 196 | 96 |
-//! | miniature reed | 2,672 | 1,322 | 2.0 | 1,230 | 1,091 |
-//! | tactile dome | 1,488 | 213 | 7.0 | 155 | 66 |
-//! | keyboard leaf contact | 1,967 | 414 | 4.8 | 342 | 243 |
-//! | signal relay | 2,115 | 812 | 2.6 | 707 | 623 |
-//! | power relay 30 A | 3,019 | 1,735 | 1.7 | 1,613 | 1,572 |
-//! | contactor 100 A | 2,922 | 1,416 | 2.1 | 1,314 | 1,179 |
-//! | large contactor | 4,387 | 1,894 | 2.3 | 1,706 | 1,668 |
+//! | my tactile button (example.toml) | 1,205 | 191 | 6.3 | 125 | 54 |
+//! | MEMS micro-switch | 1,505 | 220 | 6.8 | 162 | 78 |
+//! | miniature reed | 2,490 | 1,191 | 2.1 | 1,147 | 1,039 |
+//! | tactile dome | 1,558 | 156 | 10.0 | 131 | 59 |
+//! | keyboard leaf contact | 1,398 | 352 | 4.0 | 310 | 234 |
+//! | signal relay | 2,029 | 717 | 2.8 | 676 | 611 |
+//! | power relay 30 A | 2,742 | 1,614 | 1.7 | 1,512 | 1,447 |
+//! | contactor 100 A | 2,447 | 1,333 | 1.8 | 1,226 | 1,142 |
+//! | large contactor | 4,417 | 1,882 | 2.3 | 1,733 | 1,604 |
 //!
-//! The core's share of a draw (scene + prediction) is 75-95 %. Where `Auto` answers with a
-//! closed form the prediction proper is a third of a draw and building the `Scene` (validation,
-//! regime, asymptote) half; the goal of 10 times (a prediction at least half of a draw) would
-//! need a `Scene` that costs little more than its arithmetic. The scene used to be moved out of
-//! its `Result` through two `?` and a `map_err` (a couple of hundred bytes copied three times, a
-//! fifth of a draw on the example file); it is now read where it is built.
+//! Runs of one binary differ by up to a fifth on this machine (the example file's draw: 182-199
+//! ns here, 140-150 ns in runs of that case alone; the version before, 1,097-1,313 ns), so the
+//! ratios are known to about that. The core's share of a draw (scene + prediction) is 65-96 %.
+//! Where `Auto` answers with a closed form the prediction proper is a quarter to a third of a
+//! draw and building the `Scene` (validation, regime, asymptote) about as much; the goal of 10
+//! times (a prediction at least half of a draw) would need a `Scene` that costs little more than
+//! its arithmetic. The scene used to be moved out of its `Result` through two `?` and a
+//! `map_err` (a couple of hundred bytes copied three times, a fifth of a draw on the example
+//! file); it is now read where it is built, through a reference (bound by value, it was still
+//! copied once: 1.00-1.10x on the example file, 1.05-1.08x on the dome, paired runs).
 
 use std::hint::black_box;
 use std::time::Duration;
