@@ -149,8 +149,8 @@ $heldout
   this capture; a contactor, whose own flights last milliseconds, needs a longer gap. The
   push button's release window from the earlier half holds at 5 ms only: at 10-20 ms the
   earlier half's one late burst (13.8 ms, after a quiet 9.1 ms) counts as a burst, so the
-  earlier half shows none, and at 1-2 ms its late part is that burst and a 2.2 ms one, whose
-  excess over the gap is a tenth of a millisecond; either way nothing in the earlier half says
+  earlier half shows none, and at 1-2 ms its late part is that burst and a 2.2 ms one (over a
+  2 ms gap, an excess of 0.17 ms); either way nothing in the earlier half says
   that a third of the later releases bounce again 17-35 ms on, and the window covers 21-24 of
   the 28 (the table above).
 - The windows are the P99 of the fitted model's posterior predictive: the bounce of the next
@@ -164,10 +164,10 @@ $heldout
   part of one event borrows the other parts' spread; the late part's spread is that of its
   excess over the burst gap, because a late burst holds a quiet interval of at least the gap
   and so is never shorter (a log-normal of the whole bounce would put late bursts below it,
-  and spread the borrowed width over the gap too). The floor is a matter of what a late burst is, not of a closer fit to this
-  capture (in sample, the floor's P99 is a little further from the observed: the model table);
-  the earlier half's window is 56.2 ms, 1.63 times the largest later release. It rests on one
-  late burst, as the burst gap's table shows.
+  and spread the borrowed width over the gap too). The floor is a matter of what a late burst
+  is, not of a closer fit to this capture (in sample, the floor's P99 is a little further from
+  the observed: the model table); the earlier half's window is 56.2 ms, 1.63 times the largest
+  later release. It rests on one late burst, as the burst gap's table shows.
   \`docs/replay.md\` replays those windows through the debouncer.
 
 ## Not done

@@ -280,7 +280,7 @@ fn the_fitted_model_recovers_a_known_mixture_of_clean_edges_bursts_and_late_burs
     // 30 % clean, 50 % one burst log-normal (100 us x/ e^0.5), 20 % late burst: the gap
     // (5 ms) plus a log-normal excess (45 ms x/ e^0.3), settling for at least the gap (the
     // late burst's last interval starts 50 us before its end, and the excess is at least
-    // that: 9.1e-4 of its median is 23 standard deviations below it).
+    // that: 1.1e-3 of its median is 23 standard deviations below it).
     let (n, clean, single) = (4000, 0.3, 0.5);
     let (burst_mu, burst_sigma) = ((100e-6_f64).ln(), 0.5);
     let (late_mu, late_sigma) = ((45e-3_f64).ln(), 0.3);

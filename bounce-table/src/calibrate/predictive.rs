@@ -7,9 +7,9 @@
 //! says little about the next 27). So:
 //!
 //! - each part's log-duration (over its floor: the burst gap for a late burst, which holds a
-//!   quiet interval that long; 0 for the others) is the Student t posterior predictive of a normal sample with
-//!   unknown mean and variance (non-informative prior): centre the sample mean, scale
-//!   `s sqrt(1 + 1/n)`, `n - 1` degrees of freedom;
+//!   quiet interval that long; 0 for the others) is the Student t posterior predictive of a
+//!   normal sample with unknown mean and variance (non-informative prior): centre the sample
+//!   mean, scale `s sqrt(1 + 1/n)`, `n - 1` degrees of freedom;
 //! - a part with fewer than [`MIN_FIT`] events has no spread of its own: it takes the pooled
 //!   within-part spread of the switch and kind's other parts (their degrees of freedom);
 //! - the shares of clean, one-burst and late-burst events are the posterior mean under a
