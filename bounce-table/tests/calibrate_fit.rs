@@ -623,3 +623,48 @@ fn the_bounce_is_counted_per_section_of_the_protocol() {
         ""
     );
 }
+
+#[test]
+fn a_late_burst_exactly_a_gap_long_keeps_the_fit() {
+    // Releases on a clock whose ticks divide the gap: four bursts of 0.1-0.4 ms, three late
+    // bursts 8-20 ms long, and one whose two changes are exactly the gap apart. That one has
+    // no excess over the gap: the late part is then the whole bounce's log-normal, and the
+    // model still gives a window (with the gap as floor it had none).
+    let release = |i: u32, changes: Vec<f64>| Event {
+        switch: "ticks".into(),
+        origin: format!("event {i}"),
+        kind: Kind::Release,
+        changes,
+        section: None,
+    };
+    let mut events = vec![
+        release(0, vec![0.0, 1e-4]),
+        release(1, vec![0.0, 1e-4, 2e-4]),
+        release(2, vec![0.0, 3e-4]),
+        release(3, vec![0.0, 1e-4, 4e-4]),
+        release(4, vec![0.0, 8e-3]),
+        release(5, vec![0.0, 1e-4, 12e-3]),
+        release(6, vec![0.0, 20e-3]),
+        release(7, vec![0.0, GAP]),
+    ];
+    events.push(release(8, vec![0.0]));
+    let groups = group(&events, 1e-9, GAP);
+    let d: Vec<_> = groups.values().flatten().collect();
+    let m = BounceModel::fit(&d);
+    assert_eq!(
+        m.late_bounce.map(|l| (l.floor, l.n)),
+        Some((0.0, 4)),
+        "{m:?}"
+    );
+    let w = window(&d, 0.99);
+    assert!(w.predictive.is_some_and(|p| p >= 20e-3), "{w:?}");
+    // Without the exact one, the late part is the excess over the gap.
+    events.pop();
+    events.pop();
+    let groups = group(&events, 1e-9, GAP);
+    let d: Vec<_> = groups.values().flatten().collect();
+    assert_eq!(
+        BounceModel::fit(&d).late_bounce.map(|l| (l.floor, l.n)),
+        Some((GAP, 3))
+    );
+}

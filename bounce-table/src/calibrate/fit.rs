@@ -339,13 +339,15 @@ impl BounceModel {
         let late_events: Vec<_> = d.iter().filter(|x| bounces(x) && x.bursts > 1).collect();
         let late: Vec<f64> = late_events.iter().map(|x| x.bounce).collect();
         // The late bursts' floor: the least burst gap they were described at (one gap for
-        // all, as `calibrate` describes them).
-        let late_floor = late_events
+        // all, as `calibrate` describes them). A late burst whose bounce is the gap itself (two
+        // changes exactly a gap apart, in a capture whose clock ticks divide the gap) has no
+        // excess to take the logarithm of: then the part is the whole bounce's log-normal.
+        let gap = late_events
             .iter()
             .map(|x| x.burst_gap)
             .fold(f64::INFINITY, f64::min);
-        let late_floor = if late_floor.is_finite() {
-            late_floor
+        let late_floor = if gap.is_finite() && late.iter().all(|t| *t > gap) {
+            gap
         } else {
             0.0
         };

@@ -114,7 +114,7 @@ pub fn assess(groups: &Groups<'_>, percentile: f64, seed: u64) -> String {
         "\n## Fitted bounce model\n\nEach event is clean, one burst, or bounces again after a quiet interval of at \
          least the burst gap (a late burst); a bounce shorter than the resolution is not timed and counts as clean. Bursts are log-normal (median x/ geometric \
          spread); a late burst holds a quiet interval of at least the burst gap, so its bounce is the gap plus a \
-         log-normal excess (gap + median x/ spread). The burst term is the impact model's (first flight / (1 - R), times 1 + the closed share: \
+         log-normal excess (gap + median x/ spread; the whole bounce's log-normal where a late burst lasts exactly the gap). The burst term is the impact model's (first flight / (1 - R), times 1 + the closed share: \
          the dwell and chatter a Newton impact does not have) where it holds, else the observed bursts'. \
          A press whose contact holds, inside its burst, for a dwell of at least a threshold share of its longest \
          flight and then opens again reopens: the stuck pair of two bodies with unequal partial frequencies, \
