@@ -183,11 +183,12 @@ else
   echo "SKIPPED: no ../shared/data/bouncy-button-uno.jsonl on this machine (not part of the repository)"
 fi
 
-step "the README's bounce-table example and its plots (docs/plots) are current"
+step "the README's bounce-table example and its plots (docs/plots) are current, and docs/png's SVGs unchanged"
 plots=$(mktemp -d)
 example=$(cargo run --quiet --release -p bounce-table -- bounce-table/scenes/example.toml --plot "$plots")
 diff -r "$plots" docs/plots
 rm -rf "$plots"
+scripts/plot-png.sh --check
 python3 - "$example" <<'PY'
 import sys
 if sys.argv[1].strip() not in open("README.md").read():
