@@ -80,13 +80,24 @@ enum Answer {
     Exact(contact_bounce_reference::Outcome),
 }
 
+/// `f` of Auto's prediction where it promises `tolerance` (read where it was made: a Monte
+/// Carlo sample keeps only its bounds), `None` where the exact reference must answer.
+fn promised<R>(
+    input: &SceneInput,
+    tolerance: Tolerance<f64>,
+    f: impl FnOnce(&Prediction<f64>) -> R,
+) -> Result<Option<R>, FieldError> {
+    input.with_core::<f64, _>(|scene| {
+        let p = scene.predict(Method::Auto(tolerance));
+        p.promises(tolerance).then(|| f(&p))
+    })
+}
+
 fn answer(input: &SceneInput, tolerance: Tolerance<f64>) -> Result<Answer, FieldError> {
-    let p = input.predict::<f64>(Method::Auto(tolerance))?;
-    if p.promises(tolerance) {
-        Ok(Answer::Model(p))
-    } else {
-        Ok(Answer::Exact(exact_outcome(input)?))
-    }
+    Ok(match promised(input, tolerance, |p| *p)? {
+        Some(p) => Answer::Model(p),
+        None => Answer::Exact(exact_outcome(input)?),
+    })
 }
 
 impl Answer {
@@ -114,16 +125,12 @@ fn exact_bounds(out: &contact_bounce_reference::Outcome) -> Result<(f64, f64, bo
 }
 
 /// [`Answer::bounds`] of the scene's answer, without keeping the answer: a Monte Carlo sample's
-/// path (the prediction is read where it was made, not moved into an `Answer`).
+/// path.
 fn answer_bounds(
     input: &SceneInput,
     tolerance: Tolerance<f64>,
 ) -> Result<(f64, f64, bool), FieldError> {
-    let promised = input.with_core::<f64, _>(|scene| {
-        let p = scene.predict(Method::Auto(tolerance));
-        p.promises(tolerance).then(|| model_bounds(&p))
-    })?;
-    match promised {
+    match promised(input, tolerance, model_bounds)? {
         Some(bounds) => bounds,
         None => exact_bounds(&exact_outcome(input)?),
     }
