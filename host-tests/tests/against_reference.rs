@@ -913,3 +913,53 @@ fn a_viscous_scene_predicts_what_the_run_time_choice_predicts() {
     }
     assert!(checked > 1000, "{checked} predictions compared");
 }
+
+#[test]
+fn the_f32_exact_tier_solves_the_flights_of_fast_switches() {
+    // Every catalogue switch in f32 with a threshold (so that flights are solved, not summed
+    // as a tail): the exact tier states its error and agrees with f64 within it. The Taylor
+    // series of a short flight was summed in seconds: its coefficients grow as Omega^k and
+    // overflowed f32 at the MEMS switch's Omega = 1e6 rad/s (NaN, then a flight that "did not
+    // return", no expected error); they are now summed in units of 1 / Omega.
+    use contact_bounce::{catalogue, Scene, Threshold, Viscous};
+    for s in catalogue::ALL {
+        for fraction in [1e-1, 1e-2, 1e-3] {
+            let mut wide = s.contact::<f64>();
+            wide.threshold = Threshold::FractionOfFirst(fraction);
+            let mut narrow = s.contact::<f32>();
+            #[allow(clippy::cast_possible_truncation)]
+            let narrow_fraction = fraction as f32;
+            narrow.threshold = Threshold::FractionOfFirst(narrow_fraction);
+            let wide =
+                Scene::new(wide, Viscous::new(s.damping_ratio).expect("valid")).expect("valid");
+            #[allow(clippy::cast_possible_truncation)]
+            let narrow_zeta = s.damping_ratio as f32;
+            let narrow =
+                Scene::new(narrow, Viscous::new(narrow_zeta).expect("valid")).expect("valid");
+            let max_impacts = contact_bounce::tiers::EXACT_MAX_IMPACTS;
+            let a = wide.predict(Method::Exact { max_impacts });
+            let b = narrow.predict(Method::Exact { max_impacts });
+            let e = b
+                .expected_error
+                .unwrap_or_else(|| panic!("{} {fraction}: no expected error: {b:?}", s.name));
+            assert_eq!(
+                a.impacts_above.value(),
+                b.impacts_above.value().map(f64::from),
+                "{} {fraction}",
+                s.name
+            );
+            let (t, c) = (
+                a.last_above_time.seconds().expect("ends"),
+                f64::from(b.last_above_time.seconds().expect("ends")),
+            );
+            // Within the stated error, beside the inputs' own rounding to f32 (a few
+            // epsilon of each, which moves the answer as much: see the test above).
+            let bound = f64::from(e) + 8.0 * f64::from(f32::EPSILON);
+            assert!(
+                (c / t - 1.0).abs() <= bound,
+                "{} {fraction}: {c:e} vs {t:e}, bound {bound:e}",
+                s.name
+            );
+        }
+    }
+}

@@ -257,25 +257,27 @@ impl<F: Float> Oscillator<F> {
         (x - delta, v)
     }
 
-    /// (y(t) / t, y'(t)) from the Taylor series of y about the departure: c1 = -a,
-    /// c2 = (2 zeta Omega a - Omega^2 Delta) / 2,
-    /// c_{k+2} = -(2 zeta Omega (k + 1) c_{k+1} + Omega^2 c_k) / ((k + 2)(k + 1)).
+    /// (y(t) / t, y'(t)) from the Taylor series of y about the departure, in the time
+    /// u = Omega t: y = sum d_k u^k with d1 = -a / Omega, d2 = (2 zeta a / Omega - Delta) / 2,
+    /// d_{k+2} = -(2 zeta (k + 1) d_{k+1} + d_k) / ((k + 2)(k + 1)). (In seconds the
+    /// coefficients grow as Omega^k: beyond f32's range at k = 7 for Omega = 1e6 rad/s.)
     fn series(&self, a: F, t: F) -> (F, F) {
-        let alpha2 = F::TWO * self.zeta * self.omega;
-        let w2 = self.omega * self.omega;
-        let (mut previous, mut current) = (-a, (alpha2 * a - w2 * self.delta) * F::HALF);
+        let zeta2 = F::TWO * self.zeta;
+        let u = self.omega * t;
+        let first = -a / self.omega;
+        let (mut previous, mut current) = (first, (-zeta2 * first - self.delta) * F::HALF);
         let mut sum = TaylorSum::new(previous);
         let mut kf = F::ONE;
         for reciprocal in F::TAYLOR_RECIPROCALS.iter().skip(2) {
             kf += F::ONE;
-            if sum.add(kf, current, t, 2) {
+            if sum.add(kf, current, u, 2) {
                 break;
             }
-            let next = -(alpha2 * kf * current + w2 * previous) * *reciprocal;
+            let next = -(zeta2 * kf * current + previous) * *reciprocal;
             previous = current;
             current = next;
         }
-        (sum.over_t, sum.slope)
+        (sum.over_t * self.omega, sum.slope * self.omega)
     }
 
     /// (y(t), y'(t)): the series for short times, the closed form beyond.
