@@ -16,15 +16,12 @@ pub trait Tuning: Sealed + Sized + 'static {
     /// A relative size below which an asymptotic small-impulse tail is exact to rounding
     /// (about the cube root of epsilon: 6e-6 in f64, 5e-3 in f32).
     const TAIL_CUTOFF: Self;
-    /// The departure speed, in units of Omega |Delta|, below which the exact tier typically sums
-    /// a preload's Zeno tail as a series (where its truncation falls below the rounding of the
-    /// bounce): 0.03 in f64, 0.15 in f32. Typical values, read off the departures at which the
-    /// tail was taken for R from 0.3 to 0.98 and zeta from 0.001 to 1 (f64: 0.008-0.056 up to
-    /// R = 0.9, down to 0.0008 at R = 0.98 and zeta = 1; f32: 0.02-0.25, down to 0.005).
-    /// Only [`Method::Auto`]'s estimate of that tier's work uses it.
-    ///
-    /// [`Method::Auto`]: crate::Method::Auto
-    const SERIES_TAIL_DEPARTURE: Self;
+    /// The departure speed, in units of Omega |Delta|, below which a preloaded flight (damping
+    /// ratio <= 1) is its power series in the departure, to rounding: the series' truncation,
+    /// (2.2 eps)^13 / eps of the flight (tested in `exact/tail.rs`), is then below epsilon:
+    /// 0.02 in f64, 0.1 in f32. Below it the exact tier solves no root: it walks a Zeno
+    /// tail's flights by their series to where the tail's own series is summed.
+    const SERIES_EXACT_DEPARTURE: Self;
     /// The relative error the math backend can add to a prediction: 0 for libm (its 1-2 ULP
     /// are below the model's own errors), 0.15 for micromath (`f32` only; measured on the
     /// host-tests sweep: its atan2 error of ~3e-3 rad is a large relative error of small
@@ -146,7 +143,7 @@ const fn sin_reciprocals<const N: usize>() -> [f64; N] {
 impl Tuning for f64 {
     const SINC_SERIES_LIMIT: Self = 0.05;
     const TAIL_CUTOFF: Self = 6e-6;
-    const SERIES_TAIL_DEPARTURE: Self = 0.03;
+    const SERIES_EXACT_DEPARTURE: Self = 0.02;
     const BACKEND_ERROR: f64 = 0.0;
     const SIN_RECIPROCALS: &'static [Self] = &sin_reciprocals::<10>();
     const TAYLOR_RECIPROCALS: &'static [Self] = &crate::exact::RECIPROCALS;
@@ -164,7 +161,7 @@ impl Tuning for f64 {
 impl Tuning for f32 {
     const SINC_SERIES_LIMIT: Self = 0.5;
     const TAIL_CUTOFF: Self = 5e-3;
-    const SERIES_TAIL_DEPARTURE: Self = 0.15;
+    const SERIES_EXACT_DEPARTURE: Self = 0.1;
     const BACKEND_ERROR: f64 = if cfg!(feature = "micromath") {
         0.15
     } else {

@@ -341,7 +341,7 @@ impl<F: Float> Flights<F> for Kernel<F> {
         }
     }
 
-    fn tail(&self, a: F, _elapsed: F) -> Option<(F, F)> {
+    fn tail(&mut self, a: F, _elapsed: F) -> Option<(F, F)> {
         let g = -self.omega2 * self.delta + self.force;
         if g.is_nan() || g <= F::ZERO {
             return None;

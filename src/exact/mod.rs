@@ -21,8 +21,11 @@
 //! A preload's Zeno tail (zeta <= 1) is summed as a power series in the departure speed
 //! (`tail.rs`: the rest of the bounce S solves S(a) = t(a) + S(R v(a)), t and v the flight
 //! and its return speed as series), once its last two terms say that the truncation is below
-//! an epsilon of the bounce (f64: near 0.03 Omega |Delta|, where the first-order sum below
-//! waits for 6e-6 Omega |Delta|: ln(5000) / ln(1 / R) flights later). Over-damped
+//! an epsilon of the bounce (f64: near 0.005 Omega |Delta|, where the first-order sum below
+//! waits for 6e-6 Omega |Delta|: ln(800) / ln(1 / R) flights later). Below
+//! [`Tuning::SERIES_EXACT_DEPARTURE`](crate::model::Tuning) Omega |Delta| (f64: 0.02) a flight
+//! is its series to rounding: the flights from there to where S is summed are walked by their
+//! series, no root solved. Over-damped
 //! (zeta > 1), it is summed to first order once the departure speed a is below
 //! [`Tuning::TAIL_CUTOFF`](crate::model::Tuning::TAIL_CUTOFF) Omega |Delta| and the damping's
 //! drift of
@@ -532,7 +535,7 @@ fn surely_returns<F: Float>(omega: F, zeta: F, delta: F, departure: F) -> bool {
 /// with a kernel, whose flights are solved mode by mode, about 4,500 and 2,900 a flight (5 to 37
 /// flights; a flight that does not return scans its whole bracket, up to 40,000), so 15 + 10.
 /// Flights are counted from the first impulse down to the threshold or to where the tail is
-/// summed (the series' departure, [`Tuning::SERIES_TAIL_DEPARTURE`](crate::model::Tuning),
+/// walked by their series (the series' departure, [`Tuning::SERIES_EXACT_DEPARTURE`](crate::model::Tuning),
 /// in a preload's Zeno accumulation with zeta <= 1; the first-order tail's elsewhere), or are the
 /// closed tier's count. Scenes this tier hands to the closed tier cost what it does.
 pub(crate) fn cost<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>, walk: &Walk<F>) -> F {
@@ -547,7 +550,7 @@ pub(crate) fn cost<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>, walk: &Walk
     let tail = F::TWO
         * scale
         * if series {
-            F::SERIES_TAIL_DEPARTURE
+            F::SERIES_EXACT_DEPARTURE
         } else {
             F::TAIL_CUTOFF
         };
@@ -578,7 +581,8 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
     /// this scene with `max_impacts` (each an `exp` and the sine series, or a Taylor series of
     /// at most 40 terms; per flight at most 6 Halley steps, then at most [`ROOT_STEPS`] in the
     /// bracketed search), before the averaged model finishes what is left: known before
-    /// calling.
+    /// calling. (A Zeno tail may also walk up to 64 flights by their series, two polynomials
+    /// each, once a prediction: see `exact/tail.rs`.)
     /// `None` where the tier evaluates no flight (the closed tier's exact sums answer, or the
     /// averaged model where the kernel's modes are nearly real or two kernels act). With a
     /// relaxation kernel a flight takes at most [`KERNEL_FLIGHT_STEPS`]
@@ -604,7 +608,7 @@ pub(crate) trait Flights<F> {
     /// The rest of a Zeno accumulation whose next flight leaves at `departure`, `elapsed`
     /// (s) after the first impact, summed in closed form, with a bound on its error (s):
     /// `None` until that form is exact to the rounding of the whole bounce.
-    fn tail(&self, departure: F, elapsed: F) -> Option<(F, F)>;
+    fn tail(&mut self, departure: F, elapsed: F) -> Option<(F, F)>;
 }
 
 /// Viscous damping's flights, with the next guess from the last flight.
@@ -620,7 +624,13 @@ struct Damped<'a, F> {
     /// A Zeno accumulation's tail as a series (zeta <= 1), else `None`: the first-order sum.
     /// Borrowed: the flights are copied at each impact, the series need not be.
     series: Option<&'a tail::ZenoTail<F>>,
+    /// Whether the tail may still walk flights by their series to where it is summed (until a
+    /// walk of [`WALKED_FLIGHTS`] fell short: R near 1).
+    walk: bool,
 }
+
+/// Most flights the tail walks by their series in one call (see [`Damped::tail`]).
+const WALKED_FLIGHTS: u32 = 64;
 
 impl<F: Float> Flights<F> for Damped<'_, F> {
     fn land(&mut self, departure: F) -> Landing<F> {
@@ -628,6 +638,17 @@ impl<F: Float> Flights<F> for Damped<'_, F> {
         // The first guess: the flight's series where it reaches, else the last flight scaled
         // as the undamped flights scale, else (a preload's first flight) the undamped flight.
         // Where the guess is off by more than Halley's window, the bracketed search decides.
+        if let Some((flight, speed)) = self
+            .series
+            .and_then(|s| s.exact_flight(departure / self.scale))
+        {
+            self.previous = None;
+            return Landing::Returns {
+                time: flight / omega,
+                speed: speed * self.scale,
+                grazing: false,
+            };
+        }
         if let Some(series) = self.series.and_then(|s| s.flight(departure / self.scale)) {
             // Departures only fall from here, so the series reaches every later flight and the
             // scaled guess (an `atan2` a flight) is not needed again.
@@ -653,16 +674,37 @@ impl<F: Float> Flights<F> for Damped<'_, F> {
         landing
     }
 
-    fn tail(&self, departure: F, elapsed: F) -> Option<(F, F)> {
+    fn tail(&mut self, departure: F, elapsed: F) -> Option<(F, F)> {
         let small = departure / self.scale;
         if let Some(series) = self.series {
             // Taken where the truncation (twice the last two terms) is below an epsilon of
-            // the bounce so far; the sum's own rounding is a few epsilon of the tail.
-            let (sum, last) = series.sum(small)?;
+            // the bounce so far; the sum's own rounding is a few epsilon of the tail. Until
+            // then, where the flights' own series are exact to rounding, they are walked here
+            // (two polynomials a flight, no root solved); each walked departure rounds, and
+            // that compounds as a solved flight's does.
             let omega = self.oscillator.omega;
-            let (tail, truncation) = (sum / omega, F::TWO * last / omega);
-            return (tail.is_finite() && truncation <= F::EPSILON * (elapsed + tail))
-                .then(|| (tail, truncation + c::<F>(TAIL_ROUNDING) * F::EPSILON * tail));
+            let (mut eps, mut walked, mut steps) = (small, F::ZERO, 0_u32);
+            loop {
+                let (sum, last) = series.sum(eps)?;
+                let (tail, truncation) = ((walked + sum) / omega, F::TWO * last / omega);
+                if tail.is_finite() && truncation <= F::EPSILON * (elapsed + tail) {
+                    let rounding =
+                        c::<F>(TAIL_ROUNDING) + c::<F>(ROUNDING_PER_FLIGHT) * F::from_u32(steps);
+                    return Some((tail, truncation + rounding * F::EPSILON * tail));
+                }
+                if !self.walk {
+                    return None;
+                }
+                if steps >= WALKED_FLIGHTS {
+                    self.walk = false;
+                    return None;
+                }
+                let (flight, speed) = series.exact_flight(eps)?;
+                steps += 1;
+                walked += flight;
+                // R v as v - r v.
+                eps = speed - self.loss * speed;
+            }
         }
         if departure > F::TAIL_CUTOFF * self.scale {
             return None;
@@ -707,6 +749,7 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
         loss: scene.loss(),
         previous: None,
         series,
+        walk: true,
     };
     solve(scene, max_impacts, flights)
 }
