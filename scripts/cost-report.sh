@@ -152,9 +152,9 @@ fi
   echo "tactile dome with more impacts, and the dome with a relaxation kernel (kappa 1/s^3 / tau) instead"
   echo "of viscous damping. \`Method::Auto\` weighs the map, the averaged model and the exact tier by"
   echo "estimates fitted to these counts, in map impacts of about 300 instructions: an averaged"
-  echo "evaluation 0.6 of one (3.1 with a kernel), the exact tier 20 + 3 a flight (15 + 10 with a"
-  echo "kernel), flights counted to where its tail is summed. Its figure includes the closed tier it"
-  echo "always runs first, and every tier it runs that then does not promise."
+  echo "evaluation 0.6 of one (3.1 with a kernel), the exact tier 12 + 3 a flight (15 + 10 with a"
+  echo "kernel), flights counted down to where a flight is its series (or the tail is summed). Its figure"
+  echo "includes the closed tier it always runs first, and every tier it runs that then does not promise."
   echo
   echo "| target | scene | validate | closed | averaged N8 | map | exact | auto (10 %) | auto (1 %) |"
   echo "|---|---|---:|---:|---:|---:|---:|---:|---:|"

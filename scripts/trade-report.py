@@ -192,7 +192,7 @@ def main():
         md.append(f"- every tier is {min(speedups):.0f} to {max(speedups):.3g} times faster than the peer on these scenes; the peer also")
         md.append("  misses grazing returns (the undamped gap above).")
     md.append("\n`Method::Auto` picks the cheapest tier (cost counted in map impacts of about 300 instructions on")
-    md.append("a Cortex-M4F: an averaged integrand evaluation 0.6 of one, the exact tier 20 + 3 a flight,")
+    md.append("a Cortex-M4F: an averaged integrand evaluation 0.6 of one, the exact tier 12 + 3 a flight,")
     md.append("`docs/cost-report.md`) whose per-scene expected error meets the tolerance; the exact tier")
     md.append("always does. Across this")
     md.append("grid and 10,000 scenes off it, it promised and kept every promise at 10 %, 1 % and 0.1 % on every")

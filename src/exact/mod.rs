@@ -530,8 +530,9 @@ fn surely_returns<F: Float>(omega: F, zeta: F, delta: F, departure: F) -> bool {
 /// [`Method::Auto`](crate::Method::Auto)'s estimate of this tier's work on `scene`, before it
 /// runs, in Auto's unit: an impact of the map, about 300 instructions on a Cortex-M4F in f32.
 /// Measured there (f32, the catalogue's switches and the tactile dome with a relaxation kernel,
-/// `docs/cost-report.md`): with viscous damping about 6,100 instructions before the first
-/// flight (the regime's closed forms, the tail's series) and 850-920 a flight, so 20 + 3 a flight;
+/// `docs/cost-report.md`): with viscous damping about 3,500 instructions before the first
+/// flight (the regime's closed forms, the tail's series) and 850-900 a flight (2 to 6 flights
+/// solved on the catalogue's switches), so 12 + 3 a flight;
 /// with a kernel, whose flights are solved mode by mode, about 4,500 and 2,900 a flight (5 to 37
 /// flights; a flight that does not return scans its whole bracket, up to 40,000), so 15 + 10.
 /// Flights are counted from the first impulse down to the threshold or to where the tail is
@@ -559,7 +560,7 @@ pub(crate) fn cost<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>, walk: &Walk
     let (base, per_flight) = if dissipation.has_kernel() {
         (KERNEL_BASE, KERNEL_FLIGHT)
     } else {
-        (20.0, 3.0)
+        (12.0, 3.0)
     };
     c::<F>(base) + c::<F>(per_flight) * flights
 }
@@ -638,17 +639,6 @@ impl<F: Float> Flights<F> for Damped<'_, F> {
         // The first guess: the flight's series where it reaches, else the last flight scaled
         // as the undamped flights scale, else (a preload's first flight) the undamped flight.
         // Where the guess is off by more than Halley's window, the bracketed search decides.
-        if let Some((flight, speed)) = self
-            .series
-            .and_then(|s| s.exact_flight(departure / self.scale))
-        {
-            self.previous = None;
-            return Landing::Returns {
-                time: flight / omega,
-                speed: speed * self.scale,
-                grazing: false,
-            };
-        }
         if let Some(series) = self.series.and_then(|s| s.flight(departure / self.scale)) {
             // Departures only fall from here, so the series reaches every later flight and the
             // scaled guess (an `atan2` a flight) is not needed again.
@@ -674,6 +664,8 @@ impl<F: Float> Flights<F> for Damped<'_, F> {
         landing
     }
 
+    // Outlined on AVR, as `solve` is: inlined there, its loop's floats spill.
+    #[cfg_attr(target_arch = "avr", inline(never))]
     fn tail(&mut self, departure: F, elapsed: F) -> Option<(F, F)> {
         let small = departure / self.scale;
         if let Some(series) = self.series {

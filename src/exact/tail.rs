@@ -63,6 +63,17 @@ fn unpack<F: Float>(packed: &[F], zeta: F, out: &mut [F; TERMS]) {
     }
 }
 
+/// sum_m c_m eps^m, m from 1, of `coefficients` (c_1 first), by Horner's rule. Outlined on
+/// AVR, where each float operation is a call: the flight's, its return speed's and the tail's
+/// series then share one copy (the Uno's exact-tier firmware has little room to spare).
+#[cfg_attr(target_arch = "avr", inline(never))]
+fn horner<F: Float>(coefficients: &[F], eps: F) -> F {
+    coefficients
+        .iter()
+        .rev()
+        .fold(F::ZERO, |s, coefficient| (s + *coefficient) * eps)
+}
+
 impl<F: Float> ZenoTail<F> {
     /// Nothing yet: [`ZenoTail::prepare`] fills it (in place: no 100-byte moves, which would
     /// link `memcpy` into firmware).
@@ -134,15 +145,8 @@ impl<F: Float> ZenoTail<F> {
     /// is below the float's rounding ([`Tuning::SERIES_EXACT_DEPARTURE`](crate::model::Tuning),
     /// tested); `None` above.
     pub(super) fn exact_flight(&self, eps: F) -> Option<(F, F)> {
-        (eps <= F::SERIES_EXACT_DEPARTURE).then(|| {
-            let horner = |series: &[F; TERMS]| {
-                series
-                    .iter()
-                    .rev()
-                    .fold(F::ZERO, |s, coefficient| (s + *coefficient) * eps)
-            };
-            (horner(&self.flight), horner(&self.speed))
-        })
+        (eps <= F::SERIES_EXACT_DEPARTURE)
+            .then(|| (horner(&self.flight, eps), horner(&self.speed, eps)))
     }
 
     /// One flight from a departure `eps` (units of Omega |Delta|), in units of 1 / Omega,
@@ -150,12 +154,7 @@ impl<F: Float> ZenoTail<F> {
     /// guess from which one Halley step lands within rounding below eps ~ 0.1; `None` beyond
     /// [`REACH`].
     pub(super) fn flight(&self, eps: F) -> Option<F> {
-        (eps <= c::<F>(REACH)).then(|| {
-            self.flight
-                .iter()
-                .rev()
-                .fold(F::ZERO, |s, coefficient| (s + *coefficient) * eps)
-        })
+        (eps <= c::<F>(REACH)).then(|| horner(&self.flight, eps))
     }
 
     /// The rest of the bounce from a departure `eps` (units of Omega |Delta|) in units of
@@ -166,10 +165,7 @@ impl<F: Float> ZenoTail<F> {
             return None;
         }
         let used = &self.coefficients;
-        let total = used
-            .iter()
-            .rev()
-            .fold(F::ZERO, |s, coefficient| (s + *coefficient) * eps);
+        let total = horner(used, eps);
         let mut last = used.iter().rev();
         let (top, below) = (
             last.next().copied().unwrap_or(F::ZERO),
