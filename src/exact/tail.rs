@@ -20,9 +20,9 @@
 //! terms, 8 of the flight series' 12: in f64 the sum is then taken near eps = 0.005 rather than
 //! 0.03. Between the two the flights are their own series to rounding
 //! ([`Tuning::SERIES_EXACT_DEPARTURE`](crate::model::Tuning)), two polynomials each
-//! ([`ZenoTail::exact_flight`]): the few flights walked there cost less than the terms left
-//! out (callgrind over the catalogue's eight switches: 14 % fewer instructions in f64 and
-//! 32 % in f32 than 12 terms and no walk).
+//! ([`ZenoTail::exact_flight`]): the few flights walked there, and the few more solved above
+//! it, cost less than the terms left out (on the Cortex-M4F, f32, the tier's instructions on
+//! the catalogue's switches fell by 14-24 %: `docs/cost-report.md`).
 
 use super::flight_series::TERMS;
 use crate::accuracy::c;
