@@ -44,6 +44,9 @@ def pct(x):
 def seconds(x):
     if x is None:
         return "-"
+    # Rounded to the three digits shown before the unit is chosen: 999.6 ns is "1 us", not
+    # "1e+03 ns".
+    x = float(f"{x:.3g}")
     for unit, f in (("s", 1), ("ms", 1e-3), ("us", 1e-6), ("ns", 1e-9)):
         if x >= f:
             return f"{x / f:.3g} {unit}"
