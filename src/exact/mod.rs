@@ -21,8 +21,9 @@
 //! A preload's Zeno tail (zeta <= 1) is summed as a power series in the departure speed
 //! (`tail.rs`: the rest of the bounce S solves S(a) = t(a) + S(R v(a)), t and v the flight
 //! and its return speed as series), once its last two terms say that the truncation is below
-//! an epsilon of the bounce (f64: near 0.005 Omega |Delta|, where the first-order sum below
-//! waits for 6e-6 Omega |Delta|: ln(800) / ln(1 / R) flights later). Below
+//! an epsilon of the bounce (f64: near 0.005 Omega |Delta|, 0.004-0.007 on the catalogue,
+//! where the first-order sum below waits for 6e-6 Omega |Delta|: ln(800) / ln(1 / R) flights
+//! later). Below
 //! [`Tuning::SERIES_EXACT_DEPARTURE`](crate::model::Tuning) Omega |Delta| (f64: 0.02) a flight
 //! is its series to rounding: the flights from there to where S is summed are walked by their
 //! series, no root solved. Over-damped
