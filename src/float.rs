@@ -116,22 +116,17 @@ pub trait Float:
     fn within_positive(self, low: Self, high: Self) -> bool;
 
     /// sin(x) for |x| <= pi, without range reduction: reflected into |y| <= pi/2
-    /// (sin(pi - y) = sin y) and summed as a Taylor series in Horner form, multiplying by the
-    /// terms' reciprocals ([`Tuning::SIN_RECIPROCALS`](crate::model::Tuning::SIN_RECIPROCALS))
-    /// rather than dividing. Absolute error a few ULP; no libm `sin` (whose range reduction
-    /// costs ~3-7 KB of flash and does not fit the Uno). Used where the model's arguments are
-    /// bounded by construction.
+    /// (sin(pi - y) = sin y) and summed as a Taylor series by Horner's rule in y^2
+    /// ([`Tuning::SIN_COEFFICIENTS`](crate::model::Tuning::SIN_COEFFICIENTS), through the
+    /// crate's one Horner routine, outlined on bare metal). Absolute error a few ULP; no libm
+    /// `sin` (whose range reduction costs ~3-7 KB of flash and does not fit the Uno). Used
+    /// where the model's arguments are bounded by construction.
     #[inline]
     fn sin_within_pi(self) -> Self {
         let a = self.abs();
         let quarter = Self::PI * Self::HALF;
         let y = if a > quarter { Self::PI - a } else { a };
-        let y2 = y * y;
-        let mut acc = Self::ONE;
-        for reciprocal in Self::SIN_RECIPROCALS.iter().rev() {
-            acc = Self::ONE - y2 * *reciprocal * acc;
-        }
-        let s = y * acc;
+        let s = y + y * horner(Self::SIN_COEFFICIENTS, y * y);
         if self < Self::ZERO {
             -s
         } else {
@@ -410,7 +405,15 @@ impl Float for f32 {
     }
     #[inline]
     fn exp_m1(self) -> Self {
-        libm::expm1f(self)
+        // (micromath's exp is too coarse for the product form: libm's expm1f then.)
+        #[cfg(feature = "micromath")]
+        {
+            libm::expm1f(self)
+        }
+        #[cfg(not(feature = "micromath"))]
+        {
+            exp_m1_f32(self)
+        }
     }
     #[inline]
     fn floor(self) -> Self {
@@ -529,6 +532,36 @@ fn ln_1p_f32(x: f32) -> f32 {
     } else {
         libm::logf(u) * (x / (u - 1.0))
     }
+}
+
+/// e^x - 1 for `f32`: its Taylor series for |x| <= 1/2 ([`horner`], one copy on AVR, and
+/// [`Tuning::EXP_COEFFICIENTS`](crate::model::Tuning)), e^x - 1 beyond (where it is at least
+/// 0.39 in size, so the subtraction keeps its digits): libm's `expm1f` (several hundred bytes)
+/// is not linked beside `expf`. Within 2 ULP of f64's `expm1` rounded to f32, where `expm1f`
+/// is within 1 (tested over |x| from 1e-30 to 88).
+#[cfg(not(feature = "micromath"))]
+fn exp_m1_f32(x: f32) -> f32 {
+    if x.abs() <= 0.5 {
+        horner(<f32 as crate::tuning::Tuning>::EXP_COEFFICIENTS, x)
+    } else {
+        libm::expf(x) - 1.0
+    }
+}
+
+/// sum_m c_m x^m, m from 1, of `coefficients` (c_1 first), by Horner's rule. Outlined on bare
+/// metal (`target_os = "none"`: Cortex-M, AVR), where flash is short and, on AVR, each float
+/// operation is a call: the sine's, e^x - 1's and the exact tier's series then share one copy
+/// (the Uno's exact-tier firmware has little room to spare). Inlined everywhere else, where
+/// each call site's table is then unrolled (on x86-64 the exact tier took 2-6 % more
+/// instructions with it left to the compiler).
+#[cfg_attr(target_os = "none", inline(never))]
+#[cfg_attr(not(target_os = "none"), inline(always))]
+#[allow(clippy::inline_always)] // measured: see above
+pub(crate) fn horner<F: Float>(coefficients: &[F], x: F) -> F {
+    coefficients
+        .iter()
+        .rev()
+        .fold(F::ZERO, |s, coefficient| (s + *coefficient) * x)
 }
 
 /// ln(1 + z) / z for z > -1, accurate as z -> 0 (series below |z| = 1e-4).
@@ -763,6 +796,31 @@ mod tests {
         assert_eq!(super::ln_1p_f32(-1.0), f32::NEG_INFINITY);
         assert_eq!(super::ln_1p_f32(f32::INFINITY), f32::INFINITY);
         assert!(super::ln_1p_f32(-2.0).is_nan() && super::ln_1p_f32(f32::NAN).is_nan());
+    }
+
+    #[cfg(not(feature = "micromath"))]
+    #[test]
+    fn the_f32_exp_m1_is_within_two_ulp_of_f64s() {
+        extern crate std;
+        let ulps = |a: f32, b: f32| a.to_bits().abs_diff(b.to_bits());
+        let (mut worst, mut libm_worst) = (0, 0);
+        let mut x = 1e-30_f32;
+        while x < 88.0 {
+            for v in [x, -x] {
+                #[allow(clippy::cast_possible_truncation, clippy::as_conversions)]
+                let reference = libm::expm1(f64::from(v)) as f32;
+                let d = ulps(super::exp_m1_f32(v), reference);
+                worst = worst.max(d);
+                libm_worst = libm_worst.max(ulps(libm::expm1f(v), reference));
+            }
+            x *= 1.0001;
+        }
+        std::eprintln!("exp_m1_f32: worst {worst} ULP from expm1; expm1f {libm_worst}");
+        assert!(worst <= 2, "{worst} ULP");
+        assert_eq!(super::exp_m1_f32(0.0), 0.0);
+        assert_eq!(super::exp_m1_f32(-200.0), -1.0);
+        assert_eq!(super::exp_m1_f32(f32::INFINITY), f32::INFINITY);
+        assert!(super::exp_m1_f32(f32::NAN).is_nan());
     }
 
     /// The one-division ratio ln(1 + x) / x of f32 against f64's log1p(x) / x rounded to f32,

@@ -27,11 +27,16 @@ pub trait Tuning: Sealed + Sized + 'static {
     /// host-tests sweep: its atan2 error of ~3e-3 rad is a large relative error of small
     /// phases).
     const BACKEND_ERROR: f64;
-    /// The reciprocals 1 / ((2k)(2k + 1)), k = 1, 2, ..., of the Taylor series of
-    /// [`Float::sin_within_pi`](crate::Float::sin_within_pi) in Horner form, one a term: 10 in
-    /// f64 (truncation below 1e-18 at pi/2), 6 in f32 (below 4e-10). Multiplied, not divided:
-    /// a division a term was most of a sine's cost (and far more on a core without a divider).
-    const SIN_RECIPROCALS: &'static [Self];
+    /// The Taylor coefficients (-1)^k / (2k + 1)!, k = 1, 2, ..., of
+    /// [`Float::sin_within_pi`](crate::Float::sin_within_pi), summed by Horner's rule in x^2: 10
+    /// in f64 (truncation below 1e-18 at pi/2), 6 in f32 (below 4e-10). One multiplication and
+    /// one addition a term, no division.
+    const SIN_COEFFICIENTS: &'static [Self];
+    /// The Taylor coefficients 1 / m!, m = 1, 2, ..., of e^x - 1 for |x| <= 1/2 (f32's
+    /// [`Float::exp_m1`](crate::Float::exp_m1)): 15 in f64, 8 in f32 (truncation below a tenth
+    /// of an epsilon of the sum at |x| = 1/2).
+    #[doc(hidden)]
+    const EXP_COEFFICIENTS: &'static [Self];
     /// 1 / ((k + 1) k), k = 0, 1, ... (the first unused): the recurrence of the exact tier's
     /// Taylor series of a short flight, in this float (converting an `f64` table term by term
     /// linked a soft-float conversion, 838 bytes on the Uno, and ran it every term).
@@ -123,19 +128,42 @@ macro_rules! select_rule {
     }};
 }
 
-/// 1 / ((2k)(2k + 1)) for k = 1..=N, each rounded once to f64.
-const fn sin_reciprocals<const N: usize>() -> [f64; N] {
+/// (-1)^k / (2k + 1)! for k = 1..=N: the sine's Taylor coefficients after the first, each found
+/// from the one before by one division in f64 (k roundings at most, far below what the terms
+/// add to a sum).
+const fn sin_coefficients<const N: usize>() -> [f64; N] {
     let mut out = [0.0; N];
+    let mut coefficient = 1.0;
     let mut k = 0;
     while k < N {
         // (2k + 2)(2k + 3) for the k-th entry (k from 0): exact in f64.
         #[allow(clippy::cast_precision_loss, clippy::as_conversions)]
         let denominator = ((2 * k + 2) * (2 * k + 3)) as f64;
+        coefficient = -coefficient / denominator;
         #[allow(clippy::indexing_slicing)] // k < N
         {
-            out[k] = 1.0 / denominator;
+            out[k] = coefficient;
         }
         k += 1;
+    }
+    out
+}
+
+/// 1 / m! for m = 1..=N, each from the one before by one division in f64.
+const fn exp_coefficients<const N: usize>() -> [f64; N] {
+    let mut out = [0.0; N];
+    let mut coefficient = 1.0;
+    let mut m = 0;
+    while m < N {
+        // m + 1 for the m-th entry (m from 0): exact in f64.
+        #[allow(clippy::cast_precision_loss, clippy::as_conversions)]
+        let next = (m + 1) as f64;
+        coefficient /= next;
+        #[allow(clippy::indexing_slicing)] // m < N
+        {
+            out[m] = coefficient;
+        }
+        m += 1;
     }
     out
 }
@@ -145,7 +173,8 @@ impl Tuning for f64 {
     const TAIL_CUTOFF: Self = 6e-6;
     const SERIES_EXACT_DEPARTURE: Self = 0.02;
     const BACKEND_ERROR: f64 = 0.0;
-    const SIN_RECIPROCALS: &'static [Self] = &sin_reciprocals::<10>();
+    const SIN_COEFFICIENTS: &'static [Self] = &sin_coefficients::<10>();
+    const EXP_COEFFICIENTS: &'static [Self] = &exp_coefficients::<15>();
     const TAYLOR_RECIPROCALS: &'static [Self] = &crate::exact::RECIPROCALS;
     const FLIGHT_SERIES: (&'static [Self], &'static [Self]) = (
         &crate::exact::flight_series::FLIGHT_TIME,
@@ -167,7 +196,8 @@ impl Tuning for f32 {
     } else {
         0.0
     };
-    const SIN_RECIPROCALS: &'static [Self] = &narrow_all(sin_reciprocals::<6>());
+    const SIN_COEFFICIENTS: &'static [Self] = &narrow_all(sin_coefficients::<6>());
+    const EXP_COEFFICIENTS: &'static [Self] = &narrow_all(exp_coefficients::<8>());
     const TAYLOR_RECIPROCALS: &'static [Self] = &narrow_all(crate::exact::RECIPROCALS);
     const FLIGHT_SERIES: (&'static [Self], &'static [Self]) = (
         &narrow_all(crate::exact::flight_series::FLIGHT_TIME),

@@ -26,6 +26,7 @@
 
 use super::flight_series::TERMS;
 use crate::accuracy::c;
+use crate::float::horner;
 use crate::Float;
 
 /// The largest departure (in units of Omega |Delta|) the series is summed at.
@@ -61,17 +62,6 @@ fn unpack<F: Float>(packed: &[F], zeta: F, out: &mut [F; TERMS]) {
             .fold(F::ZERO, |sum, coefficient| sum * square + *coefficient);
         *slot = if m % 2 == 1 { even * zeta } else { even };
     }
-}
-
-/// sum_m c_m eps^m, m from 1, of `coefficients` (c_1 first), by Horner's rule. Outlined on
-/// AVR, where each float operation is a call: the flight's, its return speed's and the tail's
-/// series then share one copy (the Uno's exact-tier firmware has little room to spare).
-#[cfg_attr(target_arch = "avr", inline(never))]
-fn horner<F: Float>(coefficients: &[F], eps: F) -> F {
-    coefficients
-        .iter()
-        .rev()
-        .fold(F::ZERO, |s, coefficient| (s + *coefficient) * eps)
 }
 
 impl<F: Float> ZenoTail<F> {
