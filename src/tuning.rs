@@ -32,8 +32,16 @@ pub trait Tuning: Sealed + Sized + 'static {
     /// in f64 (truncation below 1e-18 at pi/2), 6 in f32 (below 4e-10). One multiplication and
     /// one addition a term, no division.
     const SIN_COEFFICIENTS: &'static [Self];
-    /// The Taylor coefficients 1 / m!, m = 1, 2, ..., of e^x - 1 for |x| <= 1/2 (f32's
-    /// [`Float::exp_m1`](crate::Float::exp_m1)): 15 in f64, 8 in f32 (truncation below a tenth
+    /// Whether the exact tier's under-damped flights shorter than 0.5 / Omega take the closed
+    /// form (down to 2 zeta / Omega) rather than their Taylor series: in f64, where it is the
+    /// faster; not in f32, where its return speed came out 0.45 epsilon low on average over a
+    /// flight (the series' 0.02), which an endless bounce's 10^5 flights compounded into 1.4e-3
+    /// of its time (6e-6 with the series; host-tests `extremes`,
+    /// `the_f32_exact_tier_does_not_drift_over_many_flights`).
+    #[doc(hidden)]
+    const SHORT_FLIGHTS_CLOSED: bool;
+    /// The Taylor coefficients 1 / m!, m = 1, 2, ..., of e^x - 1 for |x| <= 1/2 (the exact
+    /// tier's flights, and f32's [`Float::exp_m1`](crate::Float::exp_m1)): 15 in f64, 8 in f32 (truncation below a tenth
     /// of an epsilon of the sum at |x| = 1/2).
     #[doc(hidden)]
     const EXP_COEFFICIENTS: &'static [Self];
@@ -175,6 +183,7 @@ impl Tuning for f64 {
     const BACKEND_ERROR: f64 = 0.0;
     const SIN_COEFFICIENTS: &'static [Self] = &sin_coefficients::<10>();
     const EXP_COEFFICIENTS: &'static [Self] = &exp_coefficients::<15>();
+    const SHORT_FLIGHTS_CLOSED: bool = true;
     const TAYLOR_RECIPROCALS: &'static [Self] = &crate::exact::RECIPROCALS;
     const FLIGHT_SERIES: (&'static [Self], &'static [Self]) = (
         &crate::exact::flight_series::FLIGHT_TIME,
@@ -198,6 +207,7 @@ impl Tuning for f32 {
     };
     const SIN_COEFFICIENTS: &'static [Self] = &narrow_all(sin_coefficients::<6>());
     const EXP_COEFFICIENTS: &'static [Self] = &narrow_all(exp_coefficients::<8>());
+    const SHORT_FLIGHTS_CLOSED: bool = false;
     const TAYLOR_RECIPROCALS: &'static [Self] = &narrow_all(crate::exact::RECIPROCALS);
     const FLIGHT_SERIES: (&'static [Self], &'static [Self]) = (
         &narrow_all(crate::exact::flight_series::FLIGHT_TIME),
