@@ -719,6 +719,10 @@ impl<F: Float> Flights<F> for Damped<'_, F> {
             // then, where the flights' own series are exact to rounding, they are walked here
             // (two polynomials a flight, no root solved); each walked departure rounds, and
             // that compounds as a solved flight's does.
+            // Not tried where its truncation is surely far above an epsilon.
+            if small > F::TAIL_TRIED_BELOW {
+                return None;
+            }
             let omega = self.oscillator.omega;
             let (mut eps, mut walked, mut steps) = (small, F::ZERO, 0_u32);
             loop {
@@ -824,6 +828,8 @@ fn solve<F: Float, D: Dissipation<F>, M: Flights<F> + Copy>(
     let mut last_decay = F::ONE;
     // The model before the last flight that returned, its departure and its time: the
     // conditioning of a gap's last return is probed from there.
+    // (Kept for a gap alone, where it is used: a copy of the model a flight otherwise.)
+    let gap = scene.regime() == Regime::LastImpact;
     let mut last_return: Option<(M, F, F)> = None;
     let mut final_departure = F::ZERO;
     let stop = loop {
@@ -840,7 +846,7 @@ fn solve<F: Float, D: Dissipation<F>, M: Flights<F> + Copy>(
         if solved >= max_impacts {
             break Stop::Capped(F::TWO * departure);
         }
-        let before = flights;
+        let before = gap.then_some(flights);
         match flights.land(departure) {
             Landing::Stays { grazing: g } => {
                 grazing |= g;
@@ -854,7 +860,9 @@ fn solve<F: Float, D: Dissipation<F>, M: Flights<F> + Copy>(
             } => {
                 grazing |= g;
                 time.add(t);
-                last_return = Some((before, departure, t));
+                if let Some(before) = before {
+                    last_return = Some((before, departure, t));
+                }
                 last_flight = t;
                 last_decay = (departure - restitution * v) / departure;
                 speed = v;
