@@ -255,7 +255,16 @@ pub(crate) fn normal<F: crate::Float>(value: F, parameter: Parameter) -> Result<
 /// Checks that a derived quantity is finite and > 0 (else the combination overflowed or
 /// underflowed), blaming `parameter`.
 pub(crate) fn derived<F: crate::Float>(value: F, parameter: Parameter) -> Result<F, Error> {
-    if value.is_finite() && value > F::ZERO {
+    // Finite and > 0: one range of bit patterns, from the smallest subnormal to the largest
+    // finite number (NaN, the infinities, zeros and negatives all fall outside): on a
+    // Cortex-M4F 9 % fewer instructions to validate a scene and 70-220 bytes less firmware
+    // (`scripts/cost-report.sh`). On AVR the two float comparisons stay: there the 32-bit range
+    // test validated 2 % slower and made `examples/uno.rs` 536 bytes bigger.
+    #[cfg(not(target_arch = "avr"))]
+    let ok = value.within_positive(F::SMALLEST_SUBNORMAL, F::MAX);
+    #[cfg(target_arch = "avr")]
+    let ok = value.is_finite() && value > F::ZERO;
+    if ok {
         Ok(value)
     } else {
         Err(Error::new(parameter, Reason::Overflow))

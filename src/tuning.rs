@@ -22,6 +22,10 @@ pub trait Tuning: Sealed + Sized + 'static {
     /// 0.02 in f64, 0.1 in f32. Below it the exact tier solves no root: it walks a Zeno
     /// tail's flights by their series to where the tail's own series is summed.
     const SERIES_EXACT_DEPARTURE: Self;
+    /// The smallest positive subnormal number (a bit pattern of 1), as a constant: no
+    /// arithmetic that a flush-to-zero target could round to 0.
+    #[doc(hidden)]
+    const SMALLEST_SUBNORMAL: Self;
     /// The departure speed, in units of Omega |Delta|, above which the exact tier does not try
     /// a Zeno tail's series (its 8-term sum and the size of its last terms, before each
     /// flight): 0.02 in f64, where the truncation (about (2.2 eps)^8 of the tail, 1e-11 at
@@ -190,6 +194,7 @@ impl Tuning for f64 {
     const SINC_SERIES_LIMIT: Self = 0.05;
     const TAIL_CUTOFF: Self = 6e-6;
     const SERIES_EXACT_DEPARTURE: Self = 0.02;
+    const SMALLEST_SUBNORMAL: Self = f64::from_bits(1);
     const TAIL_TRIED_BELOW: Self = 0.02;
     const BACKEND_ERROR: f64 = 0.0;
     const SIN_COEFFICIENTS: &'static [Self] = &sin_coefficients::<10>();
@@ -211,6 +216,7 @@ impl Tuning for f32 {
     const SINC_SERIES_LIMIT: Self = 0.5;
     const TAIL_CUTOFF: Self = 5e-3;
     const SERIES_EXACT_DEPARTURE: Self = 0.1;
+    const SMALLEST_SUBNORMAL: Self = f32::from_bits(1);
     const TAIL_TRIED_BELOW: Self = 0.25;
     const BACKEND_ERROR: f64 = if cfg!(feature = "micromath") {
         0.15
