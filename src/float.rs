@@ -405,7 +405,8 @@ impl Float for f32 {
     }
     #[inline]
     fn exp_m1(self) -> Self {
-        // (micromath's exp is too coarse for the product form: libm's expm1f then.)
+        // (Beyond |x| = 1/2 e^x - 1 carries exp's error, which micromath's is too coarse for:
+        // libm's expm1f then.)
         #[cfg(feature = "micromath")]
         {
             libm::expm1f(self)

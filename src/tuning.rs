@@ -29,7 +29,7 @@ pub trait Tuning: Sealed + Sized + 'static {
     /// The departure speed, in units of Omega |Delta|, above which the exact tier does not try
     /// a Zeno tail's series (its 8-term sum and the size of its last terms, before each
     /// flight): 0.02 in f64, where the truncation (about (2.2 eps)^8 of the tail, 1e-11 at
-    /// 0.02) passes only in a bounce 10^5 times longer than its tail, which the flights solved
+    /// 0.02) passes only in a bounce some 5e4 times longer than its tail, which the flights solved
     /// instead keep exact (the catalogue's predictions the same to the bit, 4-10 % fewer
     /// instructions on x86-64); 0.25 in f32 (the series' reach: always tried), where a tail near
     /// R = 1 is taken above 0.1 (the dome at R = 0.95 took 1.7 times the Cortex-M4F
@@ -47,16 +47,16 @@ pub trait Tuning: Sealed + Sized + 'static {
     /// one addition a term, no division.
     const SIN_COEFFICIENTS: &'static [Self];
     /// Whether the exact tier's under-damped flights shorter than 0.5 / Omega take the closed
-    /// form (down to 2 zeta / Omega) rather than their Taylor series: in f64, where it is the
-    /// faster; not in f32, where its return speed came out 0.45 epsilon low on average over a
+    /// form (down to 2 zeta / Omega) rather than their Taylor series: in f64, where it takes
+    /// fewer instructions; not in f32, where its return speed came out 0.45 epsilon low on average over a
     /// flight (the series' 0.02), which an endless bounce's 10^5 flights compounded into 1.4e-3
     /// of its time (6e-6 with the series; host-tests `extremes`,
     /// `the_f32_exact_tier_does_not_drift_over_many_flights`).
     #[doc(hidden)]
     const SHORT_FLIGHTS_CLOSED: bool;
     /// The Taylor coefficients 1 / m!, m = 1, 2, ..., of e^x - 1 for |x| <= 1/2 (the exact
-    /// tier's flights, and f32's [`Float::exp_m1`](crate::Float::exp_m1)): 15 in f64, 8 in f32 (truncation below a tenth
-    /// of an epsilon of the sum at |x| = 1/2).
+    /// tier's flights, and f32's [`Float::exp_m1`](crate::Float::exp_m1)): 15 in f64, 8 in f32
+    /// (truncation below a tenth of an epsilon of the sum at |x| = 1/2).
     #[doc(hidden)]
     const EXP_COEFFICIENTS: &'static [Self];
     /// 1 / ((k + 1) k), k = 0, 1, ... (the first unused): the recurrence of the exact tier's
