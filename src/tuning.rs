@@ -42,7 +42,7 @@ pub trait Tuning: Sealed + Sized + 'static {
     /// phases).
     const BACKEND_ERROR: f64;
     /// The Taylor coefficients (-1)^k / (2k + 1)!, k = 1, 2, ..., of
-    /// [`Float::sin_within_pi`](crate::Float::sin_within_pi), summed by Horner's rule in x^2: 10
+    /// [`Float::sin_within_pi`](crate::Float::sin_within_pi), summed as a power series in x^2: 10
     /// in f64 (truncation below 1e-18 at pi/2), 6 in f32 (below 4e-10). One multiplication and
     /// one addition a term, no division.
     const SIN_COEFFICIENTS: &'static [Self];

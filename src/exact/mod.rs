@@ -59,7 +59,7 @@ pub use kernel::KERNEL_FLIGHT_STEPS;
 use crate::accuracy::{self, c};
 use crate::averaged::Averaged;
 use crate::closed;
-use crate::float::horner;
+use crate::float::power_series;
 use crate::mechanisms::Dissipation;
 use crate::method::Walk;
 use crate::prediction::{Approximations, Count, Course, Prediction, Tier, Time};
@@ -125,7 +125,7 @@ const ROUNDING_PER_FLIGHT: f64 = 8.0;
 /// decides a return by rounding: the count may be off by one.
 const GRAZING_EPSILONS: f64 = 64.0;
 /// Rounding of a tail summed as a series, in epsilons of the tail: its coefficients are found
-/// in about 12 steps that each round, and summed by Horner's rule.
+/// in about 12 steps that each round, and summed as a polynomial.
 const TAIL_ROUNDING: f64 = 16.0;
 
 /// (sin x, cos x) for the phases of one flight (0 <= x <= ~3 pi, the bracket's end): reduced by
@@ -152,7 +152,7 @@ fn sin_cos_small<F: Float>(x: F) -> (F, F) {
 /// eps / e^x of it: 20 epsilons at e^x = 0.05.)
 fn exp_and_m1<F: Float>(x: F) -> (F, F) {
     if x.abs() <= F::HALF {
-        let m = horner(F::EXP_COEFFICIENTS, x);
+        let m = power_series(F::EXP_COEFFICIENTS, x);
         (F::ONE + m, m)
     } else {
         let e = x.exp();

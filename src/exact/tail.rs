@@ -26,7 +26,7 @@
 
 use super::flight_series::TERMS;
 use crate::accuracy::c;
-use crate::float::horner;
+use crate::float::power_series;
 use crate::Float;
 
 /// The largest departure (in units of Omega |Delta|) the series is summed at.
@@ -135,8 +135,12 @@ impl<F: Float> ZenoTail<F> {
     /// is below the float's rounding ([`Tuning::SERIES_EXACT_DEPARTURE`](crate::model::Tuning),
     /// tested); `None` above.
     pub(super) fn exact_flight(&self, eps: F) -> Option<(F, F)> {
-        (eps <= F::SERIES_EXACT_DEPARTURE)
-            .then(|| (horner(&self.flight, eps), horner(&self.speed, eps)))
+        (eps <= F::SERIES_EXACT_DEPARTURE).then(|| {
+            (
+                power_series(&self.flight, eps),
+                power_series(&self.speed, eps),
+            )
+        })
     }
 
     /// One flight from a departure `eps` (units of Omega |Delta|), in units of 1 / Omega,
@@ -144,7 +148,7 @@ impl<F: Float> ZenoTail<F> {
     /// guess from which one Halley step lands within rounding below eps ~ 0.1; `None` beyond
     /// [`REACH`].
     pub(super) fn flight(&self, eps: F) -> Option<F> {
-        (eps <= c::<F>(REACH)).then(|| horner(&self.flight, eps))
+        (eps <= c::<F>(REACH)).then(|| power_series(&self.flight, eps))
     }
 
     /// The rest of the bounce from a departure `eps` (units of Omega |Delta|) in units of
@@ -155,7 +159,7 @@ impl<F: Float> ZenoTail<F> {
             return None;
         }
         let used = &self.coefficients;
-        let total = horner(used, eps);
+        let total = power_series(used, eps);
         let mut last = used.iter().rev();
         let (top, below) = (
             last.next().copied().unwrap_or(F::ZERO),
