@@ -535,18 +535,28 @@ fn ln_1p_f32(x: f32) -> f32 {
     }
 }
 
-/// e^x - 1 for `f32`: its Taylor series for |x| <= 1/2 ([`power_series`], one copy on AVR, and
-/// [`Tuning::EXP_COEFFICIENTS`](crate::model::Tuning)), e^x - 1 beyond (where it is at least
-/// 0.39 in size, so the subtraction keeps its digits): libm's `expm1f` (several hundred bytes)
-/// is not linked beside `expf`. Within 2 ULP of f64's `expm1` rounded to f32, where `expm1f`
-/// is within 1 (tested over |x| from 1e-30 to 88).
+/// (e^x, e^x - 1), each to its own relative accuracy: e^x - 1 from its Taylor series where
+/// |x| <= 1/2 ([`power_series`] of [`Tuning::EXP_COEFFICIENTS`](crate::model::Tuning), and e^x
+/// is then at least 0.6, so adding 1 keeps its digits), from `exp` beyond (where e^x - 1 is at
+/// least 0.39 in size, so the subtraction keeps its digits). No `expm1` is linked for it: the
+/// exact tier's flights take both (1 + expm1(x) for e^x lost eps / e^x of it: 20 epsilons at
+/// e^x = 0.05), and f32's [`Float::exp_m1`] is its second half.
+pub(crate) fn exp_and_m1<F: Float>(x: F) -> (F, F) {
+    if x.abs() <= F::HALF {
+        let m = power_series(F::EXP_COEFFICIENTS, x);
+        (F::ONE + m, m)
+    } else {
+        let e = x.exp();
+        (e, e - F::ONE)
+    }
+}
+
+/// e^x - 1 for `f32`, as [`exp_and_m1`] gives it: libm's `expf` beyond |x| = 1/2, so that
+/// libm's `expm1f` (several hundred bytes) is not linked beside it. Within 2 ULP of f64's
+/// `expm1` rounded to f32, where `expm1f` is within 1 (tested over |x| from 1e-30 to 88).
 #[cfg(not(feature = "micromath"))]
 fn exp_m1_f32(x: f32) -> f32 {
-    if x.abs() <= 0.5 {
-        power_series(<f32 as crate::tuning::Tuning>::EXP_COEFFICIENTS, x)
-    } else {
-        libm::expf(x) - 1.0
-    }
+    exp_and_m1(x).1
 }
 
 /// sum_m c_m x^m, m from 1, of `coefficients` (c_1 first), by Horner's rule, on bare metal

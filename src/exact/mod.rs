@@ -59,7 +59,7 @@ pub use kernel::KERNEL_FLIGHT_STEPS;
 use crate::accuracy::{self, c};
 use crate::averaged::Averaged;
 use crate::closed;
-use crate::float::power_series;
+use crate::float::exp_and_m1;
 use crate::mechanisms::Dissipation;
 use crate::method::Walk;
 use crate::prediction::{Approximations, Count, Course, Prediction, Tier, Time};
@@ -143,21 +143,6 @@ fn sin_cos_small<F: Float>(x: F) -> (F, F) {
     // y = x - whole turns, in [-pi, pi) (x itself below pi).
     let y = x - turns * turn;
     (y.sin_within_pi(), y.cos_within_pi())
-}
-
-/// (e^x, e^x - 1), each to its own relative accuracy: e^x - 1 from its Taylor series where
-/// |x| <= 1/2 ([`Tuning::EXP_COEFFICIENTS`](crate::model::Tuning), and e^x is then at least
-/// 0.6, so adding 1 keeps its digits), from `exp` beyond (where e^x - 1 is at least 0.39 in
-/// size). No `expm1` is linked for it, whatever the math backend. (1 + expm1(x) for e^x lost
-/// eps / e^x of it: 20 epsilons at e^x = 0.05.)
-fn exp_and_m1<F: Float>(x: F) -> (F, F) {
-    if x.abs() <= F::HALF {
-        let m = power_series(F::EXP_COEFFICIENTS, x);
-        (F::ONE + m, m)
-    } else {
-        let e = x.exp();
-        (e, e - F::ONE)
-    }
 }
 
 /// The running sums of a flight's Taylor series, y(t) / t = sum c_k t^(k - 1) and
