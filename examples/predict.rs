@@ -2,7 +2,7 @@
 //! averaged and Auto tiers) and one at compile time (the `const fn`), and prints them.
 //!
 //! Runs on the host (`cargo run --example predict`) and under QEMU for thumbv6m, thumbv7m and
-//! thumbv7em (`cargo run --release --example predict --target thumbv7em-none-eabihf`): CI
+//! thumbv7em (`cargo run --profile firmware --example predict --target thumbv7em-none-eabihf`): CI
 //! checks that every run prints the host's lines.
 #![cfg_attr(target_os = "none", no_std, no_main)]
 

@@ -12,9 +12,9 @@ rm -rf "$out"
 mkdir -p "$(dirname "$out")"
 cp -r contact-bounce-c/arduino/ContactBounce "$out"
 cp contact-bounce-c/include/contact_bounce.h "$out/src/"
-cargo +nightly build --quiet --release -p contact-bounce-c --target avr-none -Zbuild-std=core
+cargo +nightly build --quiet --profile firmware -p contact-bounce-c --target avr-none -Zbuild-std=core
 mkdir -p "$out/src/atmega328p"
-cp target/avr-none/release/libcontact_bounce_c.a "$out/src/atmega328p/libContactBounce.a"
+cp target/avr-none/firmware/libcontact_bounce_c.a "$out/src/atmega328p/libContactBounce.a"
 avr-strip --strip-debug "$out/src/atmega328p/libContactBounce.a"
 
 # The sketch as the Arduino build compiles it for the Uno (arduino:avr 1.8 platform flags).

@@ -37,11 +37,11 @@ if ! command -v arm-none-eabi-gcc >/dev/null || ! command -v qemu-system-arm >/d
   DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends gcc-arm-none-eabi qemu-system-arm >/dev/null
 fi
 rustup target add thumbv7em-none-eabihf >/dev/null 2>&1
-cargo build --quiet --release -p contact-bounce-c --target thumbv7em-none-eabihf
+cargo build --quiet --profile firmware -p contact-bounce-c --target thumbv7em-none-eabihf
 arm-none-eabi-gcc -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16 -Os -std=gnu99 \
   -Wall -Wextra -Werror -ffreestanding -ffunction-sections -fdata-sections -nostdlib -Wa,--noexecstack \
   -I"$C/include" -I"$C/examples/c" "$C/examples/c/cortex_m.c" -T "$C/examples/c/cortex_m.ld" \
-  -Wl,--gc-sections target/thumbv7em-none-eabihf/release/libcontact_bounce_c.a -o "$tmp/cortex_m.elf"
+  -Wl,--gc-sections target/thumbv7em-none-eabihf/firmware/libcontact_bounce_c.a -o "$tmp/cortex_m.elf"
 arm-none-eabi-size "$tmp/cortex_m.elf"
 timeout 300 qemu-system-arm -cpu cortex-m4 -machine mps2-an386 -nographic \
   -semihosting-config enable=on,target=native -kernel "$tmp/cortex_m.elf" > "$tmp/cortex_m"
@@ -54,7 +54,7 @@ echo "ok: the C API on the Cortex-M4F under QEMU ($(wc -l < "$tmp/cortex_m") lin
 # shellcheck source=scripts/avr-toolchain.sh
 source scripts/avr-toolchain.sh
 avr_toolchain "the C API on the Uno"
-cargo +nightly build --quiet --release -p contact-bounce-c --target avr-none -Zbuild-std=core
+cargo +nightly build --quiet --profile firmware -p contact-bounce-c --target avr-none -Zbuild-std=core
 # As .cargo/config.toml does for Rust firmware: avr-libc's single-precision routines, square
 # root and memory copies, marked undefined before -lm and -lc, are taken instead of the
 # library's generic ones.
@@ -62,7 +62,7 @@ uno() {
   avr-gcc -mmcu=atmega328p -Os -std=gnu99 -Wall -Wextra -Werror -ffunction-sections -fdata-sections \
     -I"$C/include" -I"$C/examples/c" "$C/examples/c/uno.c" -Wl,--gc-sections \
     -Wl,-u,__addsf3,-u,__subsf3,-u,__mulsf3,-u,__divsf3,-u,__eqsf2,-u,__nesf2,-u,__ltsf2,-u,__lesf2,-u,__gtsf2,-u,__gesf2,-u,__unordsf2,-u,__floatsisf,-u,__floatunsisf,-u,__fixsfsi,-u,__fixunssfsi,-u,sqrtf,-u,memcpy,-u,memmove,-u,memset \
-    -lm -lc target/avr-none/release/libcontact_bounce_c.a -lm "$@"
+    -lm -lc target/avr-none/firmware/libcontact_bounce_c.a -lm "$@"
 }
 uno -o "$tmp/uno.elf"
 avr-size "$tmp/uno.elf"

@@ -18,7 +18,7 @@ failed=0
 for example in "${examples[@]}"; do
   cargo run --quiet --example "$example" > "$tmp/host"
   for target in "${targets[@]}"; do
-    if ! timeout 300 cargo run --quiet --release --example "$example" --target "$target" > "$tmp/$target" 2> "$tmp/$target.err"; then
+    if ! timeout 300 cargo run --quiet --profile firmware --example "$example" --target "$target" > "$tmp/$target" 2> "$tmp/$target.err"; then
       echo "FAIL: $example on $target exited non-zero:" >&2
       tail -5 "$tmp/$target.err" >&2
       failed=1

@@ -21,8 +21,8 @@ if [ ! -f /usr/include/simavr/sim_avr.h ]; then
 fi
 gcc -O2 -o "$tmp/simavr-cycles" tools/simavr-cycles.c -lsimavr
 for example in uno uno_learn uno_auto; do
-  cargo +nightly build --quiet --release --example "$example" --target avr-none -Zbuild-std=core
-  elf=target/avr-none/release/examples/$example.elf
+  cargo +nightly build --quiet --profile firmware --example "$example" --target avr-none -Zbuild-std=core
+  elf=target/avr-none/firmware/examples/$example.elf
   avr-size "$elf"
   read -r text data bss _ < <(avr-size "$elf" | tail -n 1)
   if ! stack=$("$tmp/simavr-cycles" "$elf" 2> /dev/null | sed -n 's/^stack //p') || ! [[ $stack =~ ^[0-9]+$ ]]; then
