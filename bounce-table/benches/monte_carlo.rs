@@ -7,34 +7,37 @@
 //! once (`-- --test`).
 //!
 //! Measured on a 2-core x86-64 host, nanoseconds per sample (criterion medians over 10,000
-//! samples, one thread; the mean of two runs of each binary, alternating). "before": the same
+//! samples, one thread), built with the release profile (opt-level 3). "before": the same
 //! `draw` built on the version that drew each sample as a JSON value and parsed it again
-//! (commit 414e7c3, this bench added to it); "scene + prediction": the core's `Scene` built and
-//! `Method::Auto` asked for the 10 % the tool asks (`SceneInput::predict`); "prediction": that
-//! call alone, on scenes built beforehand.
+//! (commit 414e7c3, this bench's `draw` added to it, opt-level 3 as here: 1,215 ns on the
+//! example file, where at opt-level "s" it took 1,205); "scene + prediction": the core's `Scene`
+//! built and `Method::Auto` asked for the 10 % the tool asks (`SceneInput::predict`);
+//! "prediction": that call alone, on scenes built beforehand.
 //!
 //! | switch | draw before | draw | ratio | scene + prediction | prediction |
 //! |---|---:|---:|---:|---:|---:|
-//! | my tactile button (example.toml) | 1,205 | 191 | 6.3 | 125 | 54 |
-//! | MEMS micro-switch | 1,505 | 220 | 6.8 | 162 | 78 |
-//! | miniature reed | 2,490 | 1,191 | 2.1 | 1,147 | 1,039 |
-//! | tactile dome | 1,558 | 156 | 10.0 | 131 | 59 |
-//! | keyboard leaf contact | 1,398 | 352 | 4.0 | 310 | 234 |
-//! | signal relay | 2,029 | 717 | 2.8 | 676 | 611 |
-//! | power relay 30 A | 2,742 | 1,614 | 1.7 | 1,512 | 1,447 |
-//! | contactor 100 A | 2,447 | 1,333 | 1.8 | 1,226 | 1,142 |
-//! | large contactor | 4,417 | 1,882 | 2.3 | 1,733 | 1,604 |
+//! | my tactile button (example.toml) | 1,215 | 117 | 10.4 | 77 | 32 |
+//! | MEMS micro-switch | 1,515 | 141 | 10.7 | 112 | 60 |
+//! | miniature reed | 2,037 | 1,082 | 1.9 | 1,004 | 929 |
+//! | tactile dome | 1,267 | 159 | 8.0 | 79 | 37 |
+//! | keyboard leaf contact | 1,549 | 304 | 5.1 | 245 | 201 |
+//! | signal relay | 2,013 | 691 | 2.9 | 581 | 531 |
+//! | power relay 30 A | 2,757 | 1,515 | 1.8 | 1,371 | 1,286 |
+//! | contactor 100 A | 2,221 | 1,113 | 2.0 | 1,038 | 1,024 |
+//! | large contactor | 3,950 | 1,483 | 2.7 | 1,432 | 1,444 |
 //!
-//! Runs of one binary differ by up to a fifth on this machine (the example file's draw: 182-199
-//! ns here, 140-150 ns in runs of that case alone; the version before, 1,097-1,313 ns), so the
-//! ratios are known to about that. The core's share of a draw (scene + prediction) is 65-96 %.
-//! Where `Auto` answers with a closed form the prediction proper is a quarter to a third of a
-//! draw and building the `Scene` (validation, regime, asymptote) about as much; the goal of 10
-//! times (a prediction at least half of a draw) would need a `Scene` that costs little more than
-//! its arithmetic. The scene used to be moved out of its `Result` through two `?` and a
-//! `map_err` (a couple of hundred bytes copied three times, a fifth of a draw on the example
-//! file); it is now read where it is built, through a reference (bound by value, it was still
-//! copied once: 1.00-1.10x on the example file, 1.05-1.08x on the dome, paired runs).
+//! Runs of one binary differ by up to a fifth on this machine (the example file's draw: 117 ns
+//! here, 138 ns in a run an hour before), so the ratios are known to about that. Where `Auto`
+//! answers with a closed form (the example file, the dome) the prediction proper is a quarter
+//! to a third of a draw, and building the `Scene` (validation, regime, asymptote) about half
+//! again as much: the goal of a prediction at least half of a draw would need a `Scene` that
+//! costs little more than its arithmetic, where it checks every derived scale a tier forms
+//! (the hostile-input guarantees). A draw's remainder is the sample itself, its order
+//! statistics and the analysis's fixed part (the nominal estimate and the sensitivity runs,
+//! spread over its 10,000 samples); no sample of these runs went to the exact reference. The
+//! scene is read where it is built, through a reference (moved out of its
+//! `Result` by value it was copied, a fifth of a draw); the workers publish their progress every
+//! 256 samples (an atomic add a sample cost 1.23 times the time on two threads).
 
 use std::hint::black_box;
 use std::time::Duration;
