@@ -562,8 +562,9 @@ fn exp_m1_f32(x: f32) -> f32 {
 /// sum_m c_m x^m, m from 1, of `coefficients` (c_1 first), by Horner's rule, on bare metal
 /// (`target_os = "none"`: Cortex-M, AVR). Outlined there, where flash is short and, on AVR,
 /// each float operation is a call: the sine's, e^x - 1's and the exact tier's series then share
-/// one copy (the Uno's exact-tier firmware has little room to spare). An in-order core (the
-/// M0, the M4F's FPU) waits little on each step's result, so the fewest operations win.
+/// one copy (the Uno's exact-tier firmware has little room to spare). There the fewest
+/// operations win: the split below costs a few more multiplications and an unrolled copy per
+/// call site.
 #[cfg(target_os = "none")]
 #[inline(never)]
 pub(crate) fn power_series<F: Float>(coefficients: &[F], x: F) -> F {
