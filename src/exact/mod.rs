@@ -670,7 +670,7 @@ impl<F: Float> Damped<'_, F> {
     /// The flight from `departure` (s) by the tail's series, where it reaches. On hosts the
     /// departure is brought to the series' units and the flight back to seconds by
     /// multiplying with reciprocals kept from the start: two divisions that waited on each
-    /// other on every flight's way to its root (x86-64, f64: 4-5 % of the catalogue's time,
+    /// other on every flight's way to its root (x86-64, f64: 3-5 % of the catalogue's time,
     /// paired runs). On bare metal they stay divisions: the two reciprocals cost the Uno's
     /// exact tier about 100 bytes it does not have, for under 1 % of its cycles.
     #[inline]
