@@ -48,9 +48,9 @@ pub trait Tuning: Sealed + Sized + 'static {
     const SIN_COEFFICIENTS: &'static [Self];
     /// Whether the exact tier's under-damped flights shorter than 0.5 / Omega take the closed
     /// form (down to 2 zeta / Omega) rather than their Taylor series: in f64, where it takes
-    /// fewer instructions; not in f32, where its return speed came out 0.45 epsilon low on average over a
-    /// flight (the series' 0.02), which an endless bounce's 10^5 flights compounded into 1.4e-3
-    /// of its time (6e-6 with the series; host-tests `extremes`,
+    /// fewer instructions; not in f32, where its return speed came out 0.45 epsilon low on
+    /// average over a flight (the series' 0.02), which an endless bounce's 10^5 flights
+    /// compounded into 1.4e-3 of its time (6e-6 with the series; host-tests `extremes`,
     /// `the_f32_exact_tier_does_not_drift_over_many_flights`).
     #[doc(hidden)]
     const SHORT_FLIGHTS_CLOSED: bool;

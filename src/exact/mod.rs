@@ -797,14 +797,12 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
     let series = (scene.regime() == Regime::ZenoAccumulation
         && tail.prepare(zeta, scene.restitution(), scene.loss()))
     .then_some(&tail);
+    let scale = scene.omega() * scene.delta().abs();
     let flights = Damped {
         oscillator: Oscillator::new(scene.omega(), zeta, scene.delta()),
-        scale: scene.omega() * scene.delta().abs(),
+        scale,
         #[cfg(not(target_os = "none"))]
-        reciprocals: (
-            F::ONE / (scene.omega() * scene.delta().abs()),
-            F::ONE / scene.omega(),
-        ),
+        reciprocals: (F::ONE / scale, F::ONE / scene.omega()),
         loss: scene.loss(),
         previous: None,
         series,
