@@ -14,6 +14,7 @@ use crate::prediction::{Approximations, Count, Course, Prediction, Tier, Time};
 use crate::quadrature::{integrate_exp, panel, Nodes, MAX_PANELS, PANEL_WIDTH};
 use crate::regime::Regime;
 use crate::scene::lean_preload;
+use crate::scene::{AnySign, OffsetSign};
 use crate::{accuracy, Float, Scene};
 
 /// The averaged model's bounce time (s) of a preloaded contact with restitution alone, straight
@@ -89,8 +90,8 @@ pub fn preload_restitution_bounce_seconds<F: Float>(
 /// # Ok::<(), contact_bounce::Error>(())
 /// ```
 #[derive(Debug, Clone, Copy)]
-pub struct Averaged<'a, F, D> {
-    scene: &'a Scene<F, D>,
+pub struct Averaged<'a, F, D, S = AnySign> {
+    scene: &'a Scene<F, D, S>,
     nodes: Nodes,
 }
 
@@ -187,10 +188,10 @@ fn relaxed<F: Float>(x: F) -> F {
     }
 }
 
-impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
+impl<'a, F: Float, D: Dissipation<F>, S: OffsetSign> Averaged<'a, F, D, S> {
     /// The averaged model of `scene` with `nodes` points per panel.
     #[must_use]
-    pub const fn new(scene: &'a Scene<F, D>, nodes: Nodes) -> Self {
+    pub const fn new(scene: &'a Scene<F, D, S>, nodes: Nodes) -> Self {
         Self { scene, nodes }
     }
 
@@ -311,7 +312,7 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
                 return (Time::Never, Count::Infinite, capped);
             };
             time += t;
-            return match a.fall_count(self.scene.orbit(), asymptote_top, low) {
+            return match a.fall_count::<S>(self.scene.orbit(), asymptote_top, low) {
                 Count::Finite(n) => (Time::At(time), Count::Finite(impacts + n), capped),
                 Count::Infinite => (Time::At(time), Count::Infinite, capped),
             };
@@ -492,9 +493,9 @@ impl<'a, F: Float, D: Dissipation<F>> Averaged<'a, F, D> {
             from * (-a.linear * tau).exp()
         };
         let more = if impulse > F::ZERO {
-            a.fall_count(scene.orbit(), from, impulse)
+            a.fall_count::<S>(scene.orbit(), from, impulse)
         } else {
-            a.fall_count(scene.orbit(), from, F::ZERO)
+            a.fall_count::<S>(scene.orbit(), from, F::ZERO)
         };
         Ok(EnvelopePoint {
             impulse,

@@ -6,11 +6,12 @@
 
 use crate::error::{normal, Error, Parameter};
 use crate::float::{log_growth, log_growth_of_ratio};
-use crate::mechanisms::{offset_class, Dissipation, OffsetClass};
+use crate::mechanisms::{Dissipation, OffsetClass};
 use crate::prediction::{Approximations, ClosedForm, Count, Course, Prediction, Tier, Time};
 use crate::quadrature::Compensated;
 use crate::regime::Regime;
 use crate::scene::lean_preload;
+use crate::scene::OffsetSign;
 use crate::{accuracy, Float, Scene};
 
 /// A closed-form time with the error to expect of it. The methods that give one
@@ -244,9 +245,9 @@ fn impacts_above_geometric<F: Float>(first: F, threshold: F, decay: F) -> F {
     ((first.ln() - threshold.ln()) / decay).floor() + F::ONE
 }
 
-impl<F: Float, D: Dissipation<F>> Scene<F, D> {
+impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
     fn preload_scale(&self) -> Option<F> {
-        (self.delta() < F::ZERO).then(|| self.omega() * self.delta().abs())
+        (self.is_preload()).then(|| self.omega() * self.delta().abs())
     }
 
     /// t_b1 = J_B / (r Omega^2 |Delta|) (docs/physics.md sec. 5): preload, R < 1, restitution only.
@@ -314,7 +315,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
     /// [`Scene::t_b2`], even beyond the float's range.
     fn t_b2_unbounded(&self) -> Option<Estimate<F>> {
         let zeta = self.dissipation().damping_ratio();
-        if self.delta() <= F::ZERO || zeta <= F::ZERO {
+        if !self.is_gap() || zeta <= F::ZERO {
             return None;
         }
         let q = self.orbit().offset_impulse();
@@ -351,7 +352,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
     /// threshold and some loss.
     #[must_use]
     pub fn t_grazing(&self) -> Option<Estimate<F>> {
-        if self.delta() != F::ZERO {
+        if !self.is_grazing() {
             return None;
         }
         let end = self.threshold_generating()?;
@@ -390,12 +391,12 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         let omega = self.omega();
         let delta = self.delta();
         let r = self.restitution();
-        if delta == F::ZERO {
+        if self.is_grazing() {
             return n * F::PI / omega;
         }
         let x = r * self.closing_speed() / (omega * delta.abs());
         let sum = atan_geometric_sum(x, r, self.loss(), Some(n));
-        if delta < F::ZERO {
+        if self.is_preload() {
             F::TWO / omega * sum
         } else {
             F::TWO / omega * (n * F::PI - sum)
@@ -410,18 +411,20 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
 /// Never inlined: it was outlined while the exact tier called it as well, and inlined into a
 /// firmware's one caller it is larger (920 B on the Uno, 296 B on the M4F).
 #[inline(never)]
-pub(crate) fn predict<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Prediction<F> {
+pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign>(
+    scene: &Scene<F, D, S>,
+) -> Prediction<F> {
     if let Some(p) = crate::regime::answer(scene) {
         return p;
     }
     let dissipation = scene.dissipation();
-    if !dissipation.dissipates() || (scene.delta() == F::ZERO && !dissipation.has_kernel()) {
+    if !dissipation.dissipates() || (scene.is_grazing() && !dissipation.has_kernel()) {
         return exact_discrete(scene);
     }
     let asymptote = scene.asymptote();
     let start = scene.start_impulse();
     // The named forms are the asymptote's integral to J = 0; report them as they are.
-    let named = match (offset_class(scene.orbit()), dissipation.has_kernel()) {
+    let named = match (scene.offset_class(), dissipation.has_kernel()) {
         // Unbounded: a time beyond the float's range becomes `Never` with its flag, below.
         (OffsetClass::Preload, false) => scene.t_b1v_unbounded().map(|e| (ClosedForm::Tb1v, e)),
         (OffsetClass::Gap, false) if scene.loss() > F::ZERO => {
@@ -438,11 +441,11 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Predi
             asymptote.fall_time(start, F::ZERO),
         ),
     };
-    let impacts_total = add_one(asymptote.fall_count(scene.orbit(), start, F::ZERO));
+    let impacts_total = add_one(asymptote.fall_count::<S>(scene.orbit(), start, F::ZERO));
     let (last_above_time, impacts_above) = match scene.threshold_generating() {
         Some(end) => (
             asymptote.fall_time(start, end).min_with(end_time),
-            add_one(asymptote.fall_count(scene.orbit(), start, end)).min_with(impacts_total),
+            add_one(asymptote.fall_count::<S>(scene.orbit(), start, end)).min_with(impacts_total),
         ),
         None => (end_time, impacts_total),
     };
@@ -495,14 +498,16 @@ impl<F: Float> Count<F> {
 /// viscous damping (flights pi / Omega_d, impulses x R exp(-zeta Omega pi / Omega_d)). The
 /// exact tier answers those scenes with it too (without the closed forms of sec. 5, which it
 /// then does not link).
-pub(crate) fn exact_discrete<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Prediction<F> {
+pub(crate) fn exact_discrete<F: Float, D: Dissipation<F>, S: OffsetSign>(
+    scene: &Scene<F, D, S>,
+) -> Prediction<F> {
     let zeta = scene.dissipation().damping_ratio();
     let omega = scene.omega();
     let loss_decay = -(-scene.loss()).ln_1p();
     // Its callers send a scene that dissipates here only with Delta = 0, so a mechanism that
     // always dissipates ([`Viscous`](crate::Viscous)) is grazing at compile time, and its
     // firmware links none of the undamped sums below.
-    let grazing = scene.dissipation().dissipates() || scene.delta() == F::ZERO;
+    let grazing = scene.dissipation().dissipates() || scene.is_grazing();
     // Per-impact decay of the impulse, and (Delta = 0 only) the constant flight time.
     let (decay, grazing_flight) = if grazing {
         let damped = omega * (F::ONE - zeta * zeta).sqrt();

@@ -98,6 +98,7 @@ mod preloaded;
 mod quadrature;
 mod regime;
 pub mod scene;
+mod sign;
 pub mod tiers;
 mod tuning;
 pub mod window;

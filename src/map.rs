@@ -22,6 +22,7 @@ use crate::mechanisms::Dissipation;
 use crate::prediction::{Approximations, Count, Course, Prediction, Tier, Time};
 use crate::quadrature::{Compensated, Nodes};
 use crate::regime::Regime;
+use crate::scene::{AnySign, OffsetSign};
 use crate::{accuracy, Float, Scene};
 
 /// The map's default cap on iterated impacts.
@@ -74,8 +75,8 @@ pub enum MapEnd<F> {
 /// # Ok::<(), contact_bounce::Error>(())
 /// ```
 #[derive(Debug, Clone)]
-pub struct MapImpacts<'a, F, D> {
-    scene: &'a Scene<F, D>,
+pub struct MapImpacts<'a, F, D, S = AnySign> {
+    scene: &'a Scene<F, D, S>,
     speed: F,
     time: Compensated<F>,
     index: u32,
@@ -86,10 +87,10 @@ pub struct MapImpacts<'a, F, D> {
     stalled: Option<F>,
 }
 
-impl<'a, F: Float, D: Dissipation<F>> MapImpacts<'a, F, D> {
+impl<'a, F: Float, D: Dissipation<F>, S: OffsetSign> MapImpacts<'a, F, D, S> {
     /// The impacts of `scene`, at most `max_impacts` + 1 of them.
     #[must_use]
-    pub fn new(scene: &'a Scene<F, D>, max_impacts: u32) -> Self {
+    pub fn new(scene: &'a Scene<F, D, S>, max_impacts: u32) -> Self {
         Self {
             scene,
             speed: scene.closing_speed(),
@@ -104,7 +105,7 @@ impl<'a, F: Float, D: Dissipation<F>> MapImpacts<'a, F, D> {
 
     /// The walk from an impact other than impact 0: `index` at `time` (s), arriving at
     /// `speed` (m/s); the next item is the impact after it.
-    fn resume(scene: &'a Scene<F, D>, index: u32, time: F, speed: F, max_impacts: u32) -> Self {
+    fn resume(scene: &'a Scene<F, D, S>, index: u32, time: F, speed: F, max_impacts: u32) -> Self {
         let mut sum = Compensated::new();
         sum.add(time);
         Self {
@@ -137,7 +138,7 @@ impl<'a, F: Float, D: Dissipation<F>> MapImpacts<'a, F, D> {
     }
 }
 
-impl<F: Float, D: Dissipation<F>> Iterator for MapImpacts<'_, F, D> {
+impl<F: Float, D: Dissipation<F>, S: OffsetSign> Iterator for MapImpacts<'_, F, D, S> {
     type Item = Impact<F>;
 
     fn next(&mut self) -> Option<Impact<F>> {
@@ -157,7 +158,7 @@ impl<F: Float, D: Dissipation<F>> Iterator for MapImpacts<'_, F, D> {
         // R v as v - r v: keeps the loss where R rounds to 1 (r < 6e-8 in f32).
         let departure = self.speed - scene.loss() * self.speed;
         let j = F::TWO * departure;
-        let preload = scene.delta() < F::ZERO;
+        let preload = scene.is_preload();
         let stop = if scene.regime() == Regime::SingleImpact {
             Some(MapEnd::NoReturn)
         } else if preload
@@ -246,8 +247,8 @@ impl<F: Float> Tally<F> {
 
 /// The map's prediction, iterating at most `max_impacts` impacts.
 #[allow(clippy::too_many_lines)] // one loop and its hand-over; splitting it would hide the state
-pub(crate) fn predict<F: Float, D: Dissipation<F>>(
-    scene: &Scene<F, D>,
+pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign>(
+    scene: &Scene<F, D, S>,
     max_impacts: u32,
 ) -> Prediction<F> {
     if let Some(p) = crate::regime::answer(scene) {
@@ -362,7 +363,7 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
                     (dt, dn)
                 } else {
                     let a = scene.asymptote();
-                    (a.fall_time(j, low), a.fall_count(orbit, j, low))
+                    (a.fall_time(j, low), a.fall_count::<S>(orbit, j, low))
                 }
             };
             // The rest of the threshold count, if the threshold was not crossed yet.

@@ -6,6 +6,7 @@ use crate::mechanisms::Dissipation;
 use crate::prediction::Prediction;
 use crate::quadrature::{panel_count, Nodes};
 use crate::regime::Regime;
+use crate::scene::OffsetSign;
 use crate::{accuracy, closed, exact, map, Float, Scene};
 
 /// A relative tolerance asked of [`Method::Auto`] (finite, > 0).
@@ -103,7 +104,11 @@ pub(crate) struct Walk<F> {
 }
 
 impl<F: Float> Walk<F> {
-    fn new<D: Dissipation<F>>(scene: &Scene<F, D>, closed: &Prediction<F>, ln_start: F) -> Self {
+    fn new<D: Dissipation<F>, S: OffsetSign>(
+        scene: &Scene<F, D, S>,
+        closed: &Prediction<F>,
+        ln_start: F,
+    ) -> Self {
         let zeno = scene.regime() == Regime::ZenoAccumulation;
         Self {
             ln_start,
@@ -132,7 +137,7 @@ impl<F: Float> Prediction<F> {
     }
 }
 
-impl<F: Float, D: Dissipation<F>> Scene<F, D> {
+impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
     /// Predicts the bounce with the given method. Never fails: the scene was validated.
     ///
     /// ```
@@ -171,7 +176,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
 
     /// The averaged model, for its envelope J(t) and laws of motion.
     #[must_use]
-    pub const fn averaged(&self, nodes: Nodes) -> Averaged<'_, F, D> {
+    pub const fn averaged(&self, nodes: Nodes) -> Averaged<'_, F, D, S> {
         Averaged::new(self, nodes)
     }
 

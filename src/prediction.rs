@@ -3,6 +3,7 @@
 use crate::mechanisms::Dissipation;
 use crate::quadrature::Nodes;
 use crate::regime::Regime;
+use crate::scene::OffsetSign;
 use crate::{accuracy, Float, Scene};
 
 /// A time that may never come.
@@ -233,8 +234,8 @@ impl<F: Float> Prediction<F> {
     /// A tier's prediction on `scene`: the scene's regime; the tier's own `approximations`
     /// beside the scene's reduction flags; and [`Approximations::OUTSIDE_VALIDITY`] wherever
     /// the tier states no expected error (every tier assembles its answer here).
-    pub(crate) fn of_tier<D: Dissipation<F>>(
-        scene: &Scene<F, D>,
+    pub(crate) fn of_tier<D: Dissipation<F>, S: OffsetSign>(
+        scene: &Scene<F, D, S>,
         course: Course<F>,
         tier: Tier,
         approximations: Approximations,

@@ -2,6 +2,7 @@
 
 use crate::mechanisms::Dissipation;
 use crate::prediction::{Approximations, Count, Course, Prediction, Tier, Time};
+use crate::scene::OffsetSign;
 use crate::{Float, Scene};
 
 /// How a bounce ends (docs/physics.md sec. 4).
@@ -85,12 +86,16 @@ impl core::fmt::Display for Regime {
 /// A prediction that needs no tier: a single impact, periodic motion, or a gap's bounce that
 /// ends at the first contact (decided exactly: [`crate::exact::ends_at_first_contact`]). Every
 /// tier answers these first.
-pub(crate) fn answer<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Option<Prediction<F>> {
+pub(crate) fn answer<F: Float, D: Dissipation<F>, S: OffsetSign>(
+    scene: &Scene<F, D, S>,
+) -> Option<Prediction<F>> {
     by_regime(scene).or_else(|| crate::exact::ends_at_first_contact(scene))
 }
 
 /// A prediction that needs no model: single impact or periodic.
-fn by_regime<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Option<Prediction<F>> {
+fn by_regime<F: Float, D: Dissipation<F>, S: OffsetSign>(
+    scene: &Scene<F, D, S>,
+) -> Option<Prediction<F>> {
     let course = match scene.regime() {
         Regime::SingleImpact => Course::single_impact(),
         Regime::Periodic => Course {

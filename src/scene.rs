@@ -12,9 +12,12 @@ pub use crate::error::PHYSICAL_RANGE;
 pub use crate::mechanisms::{AnyDissipation, Dissipation, Hereditary, Undamped, Viscous};
 pub use crate::preloaded::Preloaded;
 pub use crate::regime::Regime;
+pub use crate::sign::{AnySign, Gap, OffsetSign, Preload};
 
 use crate::error::{derived, finite, non_negative, normal, physical, Error, Parameter, Reason};
-use crate::mechanisms::{restitution::restitution_asymptote, restitution_rate, Asymptote};
+use crate::mechanisms::{
+    offset_class, restitution::restitution_asymptote, restitution_rate, Asymptote, OffsetClass,
+};
 use crate::orbit::{Orbit, OrbitPoint};
 use crate::Float;
 
@@ -252,6 +255,18 @@ pub(crate) fn lean_preload<F: Float>(
     })
 }
 
+/// Delta (validated, so a number) on the side the scene type `S` admits.
+fn check_sign<F: Float, S: OffsetSign>(delta: F, offset: Offset<F>) -> Result<(), Error> {
+    match S::PRELOAD {
+        Some(true) if delta >= F::ZERO => Err(Error::new(Parameter::Delta, Reason::OutOfRange)),
+        Some(false) if delta <= F::ZERO => Err(match offset {
+            Offset::PreloadForce(_) => Error::new(Parameter::PreloadForce, Reason::OutOfRange),
+            Offset::Delta(_) => Error::new(Parameter::Delta, Reason::NotPositive),
+        }),
+        _ => Ok(()),
+    }
+}
+
 /// The coefficient that ends (or decays) the regime must be a normal number, or the
 /// prediction would silently lose it (e.g. r Omega^2 |Delta| underflowing).
 fn check_regime_scale<F: Float>(
@@ -439,10 +454,13 @@ impl<F: Float> Threshold<F> {
 /// A validated contact event: after construction nothing can fail.
 ///
 /// `D` names the mechanisms acting between impacts ([`Undamped`], [`Viscous`],
-/// [`Hereditary`], tuples of them, or [`AnyDissipation`]); restitution is always there.
+/// [`Hereditary`], tuples of them, or [`AnyDissipation`]); restitution is always there. `S`
+/// is the sign of Delta where the type fixes it ([`Preload`], [`Gap`]: built with
+/// [`Scene::new_preload`] or [`Scene::new_gap`], and the tiers link only that side's code), or
+/// [`AnySign`] (the default, from [`Scene::new`]: decided at run time).
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
-pub struct Scene<F, D = Undamped> {
+pub struct Scene<F, D = Undamped, S = AnySign> {
     orbit: Orbit<F>,
     restitution: F,
     loss: F,
@@ -452,6 +470,7 @@ pub struct Scene<F, D = Undamped> {
     regime: Regime,
     asymptote: Asymptote<F>,
     reduction: Option<Reduction<F>>,
+    sign: S,
 }
 
 impl<F: Float, D: Dissipation<F>> Scene<F, D> {
@@ -474,6 +493,32 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         Self::build(contact, dissipation, None)
     }
 
+    /// A preloaded scene (Delta < 0: an [`Offset::PreloadForce`], or a negative
+    /// [`Offset::Delta`]) whose type says so: the same scene and the same predictions as
+    /// [`Scene::new`], and a firmware that uses it links none of a gap's code (its
+    /// single-impact test, its closed forms, its last-return search).
+    ///
+    /// # Errors
+    /// As [`Scene::new`]; a Delta of 0 or above is [`Parameter::Delta`] with
+    /// [`Reason::OutOfRange`] (checked before any other combination).
+    pub fn new_preload(contact: Contact<F>, dissipation: D) -> Result<Scene<F, D, Preload>, Error> {
+        Scene::build(contact, dissipation, None)
+    }
+
+    /// A scene with a gap (Delta > 0) whose type says so: as [`Scene::new_preload`], for the
+    /// other side (a firmware that uses it links none of a preload's code, such as the Zeno
+    /// tail).
+    ///
+    /// # Errors
+    /// As [`Scene::new`]; a Delta of 0 or below is [`Parameter::Delta`] with
+    /// [`Reason::NotPositive`], and a preload force [`Parameter::PreloadForce`] with
+    /// [`Reason::OutOfRange`].
+    pub fn new_gap(contact: Contact<F>, dissipation: D) -> Result<Scene<F, D, Gap>, Error> {
+        Scene::build(contact, dissipation, None)
+    }
+}
+
+impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
     fn build(
         contact: Contact<F>,
         dissipation: D,
@@ -482,6 +527,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         let (omega, stiffness) = contact.frequency.validate()?;
         let stiffness = stiffness.or(reduction.map(|r| r.reduced_mass * r.omega * r.omega));
         let delta = contact.offset.validate(stiffness)?;
+        check_sign::<F, S>(delta, contact.offset)?;
         let (restitution, loss) = contact.restitution.validate()?;
         let closing_speed = physical(contact.closing_speed, Parameter::ClosingSpeed)?;
         let first_impulse = derived(
@@ -587,6 +633,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
             regime,
             asymptote,
             reduction,
+            sign: S::default(),
         })
     }
 
@@ -627,8 +674,30 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
     }
     /// The regime (docs/physics.md sec. 4).
     #[must_use]
-    pub const fn regime(&self) -> Regime {
-        self.regime
+    #[inline]
+    pub fn regime(&self) -> Regime {
+        crate::sign::narrow::<S>(self.regime)
+    }
+    /// Preload, gap or grazing: from the type where it fixes the sign, else from Delta.
+    #[inline]
+    pub(crate) fn offset_class(&self) -> OffsetClass {
+        crate::sign::class_of::<S>(offset_class(&self.orbit))
+    }
+    /// Delta < 0 (one comparison where the type leaves the sign open, as
+    /// [`Scene::offset_class`] would take two).
+    #[inline]
+    pub(crate) fn is_preload(&self) -> bool {
+        S::PRELOAD.unwrap_or_else(|| self.delta() < F::ZERO)
+    }
+    /// Delta > 0.
+    #[inline]
+    pub(crate) fn is_gap(&self) -> bool {
+        S::PRELOAD.map_or_else(|| self.delta() > F::ZERO, |preload| !preload)
+    }
+    /// Delta = 0 (never for a type that fixes the sign).
+    #[inline]
+    pub(crate) fn is_grazing(&self) -> bool {
+        S::PRELOAD.is_none() && self.delta() == F::ZERO
     }
     /// The two-body reduction, if the scene came from [`Scene::two_body`].
     #[must_use]

@@ -11,6 +11,7 @@ mod zeno_table;
 use crate::mechanisms::Dissipation;
 use crate::prediction::Approximations;
 use crate::regime::Regime;
+use crate::scene::OffsetSign;
 use crate::{Float, Scene};
 
 /// `x` in the float in use (constants of the figures and the models).
@@ -64,8 +65,8 @@ pub(crate) fn t_b2<F: Float>(j0: F) -> Option<F> {
 
 /// How much longer the longest flight is than the first: pi / theta(J_B) in a gap (flights
 /// lengthen towards 2 pi / Omega as J falls), 1 otherwise (they shorten or stay).
-fn flight_spread<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> F {
-    if scene.delta() > F::ZERO {
+fn flight_spread<F: Float, D: Dissipation<F>, S: OffsetSign>(scene: &Scene<F, D, S>) -> F {
+    if scene.is_gap() {
         F::PI / scene.orbit().at(scene.start_impulse()).phase()
     } else {
         F::ONE
@@ -81,7 +82,9 @@ fn flight_spread<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> F {
 /// where flights lengthen as J falls (a gap) by up to [`flight_spread`] more. Returns
 /// (ratio - 1, m); `None` when m = 0 (the threshold falls before the first return: the
 /// relative error is unbounded), with a kernel (not covered) or zeta >= 1.
-pub(crate) fn discreteness<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Option<(F, F)> {
+pub(crate) fn discreteness<F: Float, D: Dissipation<F>, S: OffsetSign>(
+    scene: &Scene<F, D, S>,
+) -> Option<(F, F)> {
     let zeta = scene.dissipation().damping_ratio();
     if scene.dissipation().has_kernel() || zeta >= F::ONE {
         return None;
@@ -103,8 +106,8 @@ pub(crate) fn discreteness<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> 
 ///
 /// `impacts_total` decides a gap's figure (an estimate is fine: `Auto` takes the closed
 /// tier's).
-pub(crate) fn averaged<F: Float, D: Dissipation<F>>(
-    scene: &Scene<F, D>,
+pub(crate) fn averaged<F: Float, D: Dissipation<F>, S: OffsetSign>(
+    scene: &Scene<F, D, S>,
     impacts_total: Option<F>,
 ) -> Option<F> {
     let zeta = scene.dissipation().damping_ratio();
@@ -186,8 +189,8 @@ pub(crate) fn quadrature<F: Float>(nodes: crate::Nodes) -> F {
 ///   impacts: the truth may be a single impact).
 /// - Preload: 0.3 % (zeta <= 0.01) and 2.5 % (zeta <= 0.1) of docs/physics.md hold up to j0 = 1;
 ///   measured up to j0 = 10: 0.4 % and 4.4 % (bounded here by 0.5 % and 5 %).
-pub(crate) fn map<F: Float, D: Dissipation<F>>(
-    scene: &Scene<F, D>,
+pub(crate) fn map<F: Float, D: Dissipation<F>, S: OffsetSign>(
+    scene: &Scene<F, D, S>,
     impacts_total: Option<F>,
 ) -> Option<F> {
     let dissipation = scene.dissipation();
@@ -202,7 +205,7 @@ pub(crate) fn map<F: Float, D: Dissipation<F>>(
         let (_, last) = discreteness(scene)?;
         return (zeta <= c(0.1)).then(|| F::PI * zeta * F::HALF + F::ONE / last + c(0.003));
     }
-    if scene.delta() > F::ZERO {
+    if scene.is_gap() {
         let flights = impacts_total? - F::TWO;
         if flights < F::ONE {
             return None;
@@ -235,7 +238,9 @@ pub(crate) fn map<F: Float, D: Dissipation<F>>(
 }
 
 /// Flags of the two-body reduction.
-pub(crate) fn reduction_flags<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> Approximations {
+pub(crate) fn reduction_flags<F: Float, D: Dissipation<F>, S: OffsetSign>(
+    scene: &Scene<F, D, S>,
+) -> Approximations {
     match scene.reduction() {
         Some(r) if !r.exact => Approximations::TWO_BODY_RAYLEIGH,
         _ => Approximations::NONE,
@@ -254,8 +259,8 @@ pub(crate) fn reduction_flags<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) 
 /// A relaxation kernel adds its static stiffness over the spring's, kappa tau / Omega^2, which
 /// the averaged model leaves out: on the exact hereditary reference every tier is off by about
 /// that much on a preload (-13 % at 0.133, -4 % at 0.04; host-tests `kernel` checks).
-pub(crate) fn with_reduction<F: Float, D: Dissipation<F>>(
-    scene: &Scene<F, D>,
+pub(crate) fn with_reduction<F: Float, D: Dissipation<F>, S: OffsetSign>(
+    scene: &Scene<F, D, S>,
     expected: Option<F>,
 ) -> Option<F> {
     reduced(scene, Some(expected? + static_share(scene)))
@@ -263,21 +268,23 @@ pub(crate) fn with_reduction<F: Float, D: Dissipation<F>>(
 
 /// A kernel's static stiffness over the spring's, kappa tau / Omega^2 (0 without a kernel):
 /// what a tier that averages the kernel's force leaves out.
-pub(crate) fn static_share<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>) -> F {
+pub(crate) fn static_share<F: Float, D: Dissipation<F>, S: OffsetSign>(
+    scene: &Scene<F, D, S>,
+) -> F {
     let omega = scene.omega();
     scene.dissipation().static_stiffness() / (omega * omega)
 }
 
 /// [`with_reduction`] for a tier that solves the kernel's force exactly (the exact tier): the
 /// reduction's error and the backend's, not the static stiffness.
-pub(crate) fn reduced<F: Float, D: Dissipation<F>>(
-    scene: &Scene<F, D>,
+pub(crate) fn reduced<F: Float, D: Dissipation<F>, S: OffsetSign>(
+    scene: &Scene<F, D, S>,
     expected: Option<F>,
 ) -> Option<F> {
     let expected = expected? + F::from_f64(F::BACKEND_ERROR);
     match scene.reduction() {
         Some(r) if !r.exact => {
-            if scene.delta() >= F::ZERO || r.frequency_mismatch > c(1.5) {
+            if !scene.is_preload() || r.frequency_mismatch > c(1.5) {
                 None
             } else {
                 Some(expected + c::<F>(0.9) * (r.frequency_mismatch - F::ONE) + c(0.005))

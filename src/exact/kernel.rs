@@ -39,6 +39,7 @@ use super::{
 };
 use crate::accuracy::c;
 use crate::mechanisms::Dissipation;
+use crate::scene::OffsetSign;
 use crate::{Float, Scene};
 
 /// Most evaluations of the motion per flight with a kernel: the scan for the return (steps of
@@ -123,7 +124,7 @@ impl<F: Float> Kernel<F> {
     /// first impact (the state a contact that has bounced this way long enough would hold).
     /// `None` without exactly one kernel, where the pair is (nearly) real, or where a constant
     /// overflows the float.
-    pub(crate) fn new<D: Dissipation<F>>(scene: &Scene<F, D>) -> Option<Self> {
+    pub(crate) fn new<D: Dissipation<F>, S: OffsetSign>(scene: &Scene<F, D, S>) -> Option<Self> {
         let dissipation = scene.dissipation();
         let (kappa, tau) = dissipation.kernel()?;
         let omega = scene.omega();

@@ -65,6 +65,7 @@ use crate::method::Walk;
 use crate::prediction::{Approximations, Count, Course, Prediction, Tier, Time};
 use crate::quadrature::{Compensated, Nodes};
 use crate::regime::Regime;
+use crate::scene::OffsetSign;
 use crate::{Float, Scene};
 
 /// The exact tier's default cap on solved flights: past it the averaged model finishes the
@@ -503,8 +504,8 @@ fn bracketed_root<F: Float>(
 /// come back to the stop, decided exactly by the top of its first swing (one `atan2`, one `exp`
 /// and a sine: no root is solved). Then every tier answers exactly: one impact, at t = 0.
 /// `None` otherwise, and where it does not apply (no viscous damping, a kernel, Delta <= 0).
-pub(crate) fn ends_at_first_contact<F: Float, D: Dissipation<F>>(
-    scene: &Scene<F, D>,
+pub(crate) fn ends_at_first_contact<F: Float, D: Dissipation<F>, S: OffsetSign>(
+    scene: &Scene<F, D, S>,
 ) -> Option<Prediction<F>> {
     let dissipation = scene.dissipation();
     // (`dissipates` first: a scene type without damping links none of this.)
@@ -569,15 +570,17 @@ fn surely_returns<F: Float>(omega: F, zeta: F, delta: F, departure: F) -> bool {
 /// walked by their series (the series' departure, [`Tuning::SERIES_EXACT_DEPARTURE`](crate::model::Tuning),
 /// in a preload's Zeno accumulation with zeta <= 1; the first-order tail's elsewhere), or are the
 /// closed tier's count. Scenes this tier hands to the closed tier cost what it does.
-pub(crate) fn cost<F: Float, D: Dissipation<F>>(scene: &Scene<F, D>, walk: &Walk<F>) -> F {
+pub(crate) fn cost<F: Float, D: Dissipation<F>, S: OffsetSign>(
+    scene: &Scene<F, D, S>,
+    walk: &Walk<F>,
+) -> F {
     let dissipation = scene.dissipation();
-    if !dissipation.has_kernel() && (!dissipation.dissipates() || scene.delta() == F::ZERO) {
+    if !dissipation.has_kernel() && (!dissipation.dissipates() || scene.is_grazing()) {
         return F::ONE;
     }
     let scale = scene.omega() * scene.delta().abs();
-    let series = scene.delta() < F::ZERO
-        && !dissipation.has_kernel()
-        && dissipation.damping_ratio() <= F::ONE;
+    let series =
+        scene.is_preload() && !dissipation.has_kernel() && dissipation.damping_ratio() <= F::ONE;
     let tail = F::TWO
         * scale
         * if series {
@@ -607,7 +610,7 @@ enum Stop<F> {
     Capped(F),
 }
 
-impl<F: Float, D: Dissipation<F>> Scene<F, D> {
+impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
     /// The most evaluations of the motion [`Method::Exact`](crate::Method::Exact) spends on
     /// this scene with `max_impacts` (each an `exp` and the sine series, or a Taylor series of
     /// at most 40 terms; per flight at most 6 Halley steps, then at most [`ROOT_STEPS`] in the
@@ -625,7 +628,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
         if d.has_kernel() {
             return kernel::Kernel::new(self).map(|_| flights * u64::from(KERNEL_FLIGHT_STEPS));
         }
-        let solved = d.dissipates() && self.delta() != F::ZERO;
+        let solved = d.dissipates() && !self.is_grazing();
         solved.then(|| flights * u64::from(ROOT_STEPS + HALLEY_STEPS))
     }
 }
@@ -775,8 +778,8 @@ impl<F: Float> Flights<F> for Damped<'_, F> {
 /// The exact tier's prediction, solving at most `max_impacts` flights.
 /// (Outlined on AVR, as `solve` is, and for the same reason.)
 #[cfg_attr(target_arch = "avr", inline(never))]
-pub(crate) fn predict<F: Float, D: Dissipation<F>>(
-    scene: &Scene<F, D>,
+pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign>(
+    scene: &Scene<F, D, S>,
     max_impacts: u32,
 ) -> Prediction<F> {
     if let Some(p) = crate::regime::answer(scene) {
@@ -789,7 +792,7 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
             None => Averaged::new(scene, Nodes::N20).predict(),
         };
     }
-    if !dissipation.dissipates() || scene.delta() == F::ZERO {
+    if !dissipation.dissipates() || scene.is_grazing() {
         return closed::exact_discrete(scene);
     }
     let zeta = dissipation.damping_ratio();
@@ -820,8 +823,8 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>>(
 /// the inliner's choice is the smaller one.
 #[allow(clippy::too_many_lines)] // one loop and its hand-over; splitting it would hide the state
 #[cfg_attr(target_arch = "avr", inline(never))]
-fn solve<F: Float, D: Dissipation<F>, M: Flights<F> + Copy>(
-    scene: &Scene<F, D>,
+fn solve<F: Float, D: Dissipation<F>, M: Flights<F> + Copy, S: OffsetSign>(
+    scene: &Scene<F, D, S>,
     max_impacts: u32,
     mut flights: M,
 ) -> Prediction<F> {

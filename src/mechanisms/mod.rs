@@ -20,6 +20,7 @@ use core::fmt::Debug;
 use crate::float::{ln1p_ratio, log_growth_of_ratio};
 use crate::orbit::{Orbit, OrbitPoint};
 use crate::prediction::{Count, Time};
+use crate::scene::OffsetSign;
 use crate::Float;
 
 pub(crate) mod sealed {
@@ -89,13 +90,16 @@ impl<F: Float> Asymptote<F> {
 
     /// Impacts while J falls from `j1` to `j2` on the asymptote: the integral of dJ / (|E1| T)
     /// with the small-J period (preload J / (Omega^2 |Delta|), gap 2 pi / Omega, Delta = 0 pi / Omega).
-    pub(crate) fn fall_count(&self, orbit: &Orbit<F>, j1: F, j2: F) -> Count<F> {
+    /// `S` is the scene's sign type: where it fixes the sign, the other classes' code is left
+    /// out.
+    pub(crate) fn fall_count<S: OffsetSign>(&self, orbit: &Orbit<F>, j1: F, j2: F) -> Count<F> {
         let a = self;
         if j1 <= j2 {
             return Count::Finite(F::ZERO);
         }
         let omega = orbit.omega();
-        match offset_class(orbit) {
+        let class = crate::sign::class_of::<S>(offset_class(orbit));
+        match class {
             OffsetClass::Preload => {
                 let k = omega * omega * orbit.delta().abs();
                 if j2 <= F::ZERO {
@@ -131,7 +135,7 @@ impl<F: Float> Asymptote<F> {
                 }
             }
             OffsetClass::Gap | OffsetClass::Grazing => {
-                let period = if offset_class(orbit) == OffsetClass::Gap {
+                let period = if class == OffsetClass::Gap {
                     F::TWO * F::PI / omega
                 } else {
                     F::PI / omega

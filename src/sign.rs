@@ -1,0 +1,79 @@
+//! The sign of Delta as part of a scene's type: a switch known to be preloaded (or to have a
+//! gap) when its firmware is written links none of the other side's code.
+//!
+//! A [`Scene`](crate::Scene) built with [`Scene::new`](crate::Scene::new) decides at run time
+//! whether it is a preload (Delta < 0), a gap (Delta > 0) or grazing (Delta = 0), so every
+//! tier it calls carries the code of all three: a gap's single-impact test, its closed forms
+//! and its last-return search sit in a preloaded dome's firmware, unused.
+//! [`Scene::new_preload`](crate::Scene::new_preload) and
+//! [`Scene::new_gap`](crate::Scene::new_gap) check the sign once and put it in the type
+//! ([`Preload`], [`Gap`]); the tiers then ask the type, and the optimiser leaves the other
+//! side out. The predictions are the same, bit for bit.
+
+use core::fmt::Debug;
+
+use crate::mechanisms::OffsetClass;
+use crate::regime::Regime;
+
+mod sealed {
+    pub trait Sealed {}
+}
+
+/// Which signs of Delta a scene type admits (sealed: [`AnySign`], [`Preload`], [`Gap`]).
+pub trait OffsetSign: sealed::Sealed + Copy + Debug + PartialEq + Default {
+    /// `Some(true)`: every scene of the type is preloaded (Delta < 0); `Some(false)`: every one
+    /// has a gap (Delta > 0); `None`: decided by each scene's Delta.
+    const PRELOAD: Option<bool>;
+}
+
+/// Delta of either sign, or 0: decided at run time (the default).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct AnySign;
+
+/// A preload: the spring holds the contacts closed at rest (Delta < 0).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Preload;
+
+/// A gap: the contacts are apart at rest (Delta > 0).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Gap;
+
+impl sealed::Sealed for AnySign {}
+impl sealed::Sealed for Preload {}
+impl sealed::Sealed for Gap {}
+
+impl OffsetSign for AnySign {
+    const PRELOAD: Option<bool> = None;
+}
+impl OffsetSign for Preload {
+    const PRELOAD: Option<bool> = Some(true);
+}
+impl OffsetSign for Gap {
+    const PRELOAD: Option<bool> = Some(false);
+}
+
+/// The offset class of a scene of sign type `S` whose Delta is `runtime` (what the tiers
+/// branch on): a constant where the type fixes it.
+#[inline]
+pub(crate) fn class_of<S: OffsetSign>(runtime: OffsetClass) -> OffsetClass {
+    match S::PRELOAD {
+        Some(true) => OffsetClass::Preload,
+        Some(false) => OffsetClass::Gap,
+        None => runtime,
+    }
+}
+
+/// `regime` told apart from the regimes the type rules out (a preload never has a last impact
+/// or a single impact, a gap never accumulates), so that their code is left out: the scene's
+/// validation made the excluded ones impossible, and the mapping never changes a value.
+#[inline]
+pub(crate) fn narrow<S: OffsetSign>(regime: Regime) -> Regime {
+    match (S::PRELOAD, regime) {
+        (Some(true), Regime::LastImpact | Regime::SingleImpact)
+        | (Some(false), Regime::ZenoAccumulation) => Regime::Endless,
+        _ => regime,
+    }
+}
