@@ -2,7 +2,7 @@
 
 use crate::error::Error;
 use crate::method::Method;
-use crate::scene::{Contact, Frequency, Offset, Restitution, Threshold};
+use crate::scene::{Contact, Frequency, Offset, Preload, Restitution, Threshold};
 use crate::window::{Margin, Window};
 use crate::{Float, Scene, Viscous};
 
@@ -58,14 +58,15 @@ impl<F: Float> Preloaded<F> {
         }
     }
 
-    /// The validated scene, with its viscous damping.
+    /// The validated scene, with its viscous damping, typed as a preload
+    /// ([`Scene::new_preload`]): a firmware that uses it links none of a gap's code.
     ///
     /// # Errors
     /// As [`Scene::new`] and [`Viscous::new`]: the first invalid parameter, named (a damping
     /// ratio of 0 is [`Reason::NotPositive`](crate::Reason::NotPositive)).
     #[inline]
-    pub fn scene(&self) -> Result<Scene<F, Viscous<F>>, Error> {
-        Scene::new(self.contact(), Viscous::new(self.damping_ratio)?)
+    pub fn scene(&self) -> Result<Scene<F, Viscous<F>, Preload>, Error> {
+        Scene::new_preload(self.contact(), Viscous::new(self.damping_ratio)?)
     }
 
     /// The debounce window: the bounce `method` predicts, widened by the prediction's expected

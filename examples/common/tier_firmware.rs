@@ -1,11 +1,13 @@
 // The skeleton of the per-tier cost firmware (`examples/tier_*.rs`): the tactile dome of
 // docs/physics.md sec. 7 written as f32 constants (as firmware writes its switch: no f64
 // catalogue converted at run time), its inputs hidden from the optimiser; `cost_mark(0)`, the scene
-// validated, `cost_mark(1)`, the example's `work` (one tier, named as a constant, so only that
+// validated, typed as the preload it is (`Preloaded::scene`, `Scene::new_preload`: no gap's code
+// is linked), `cost_mark(1)`, the example's `work` (one tier, named as a constant, so only that
 // tier is linked), `cost_mark(2)`, its result stored to a volatile. `scripts/cost-report.sh`
 // counts instructions (QEMU) or cycles (simavr) between the marks, and takes the crate's share
 // of flash as this firmware's text minus `tier_empty`'s (the same skeleton, no crate code).
 
+use contact_bounce::scene::Preload;
 use contact_bounce::{catalogue, Margin, Prediction, Preloaded, Scene, Undamped, Viscous, Window};
 use core::hint::black_box;
 
@@ -50,7 +52,7 @@ pub fn measure_without_scene(work: impl FnOnce() -> u32) {
 
 /// Validates the dome and runs `work` on it between the marks.
 #[allow(dead_code)]
-pub fn measure(work: impl FnOnce(&Scene<f32, Viscous<f32>>) -> u32) {
+pub fn measure(work: impl FnOnce(&Scene<f32, Viscous<f32>, Preload>) -> u32) {
     let switch = black_box(DOME);
     cost_mark(0);
     let scene = switch.scene();
@@ -58,13 +60,13 @@ pub fn measure(work: impl FnOnce(&Scene<f32, Viscous<f32>>) -> u32) {
     finish(scene.map(|scene| work(&black_box(scene))));
 }
 
-/// Validates the dome without its damping (a `Scene<f32, Undamped>`, whose type links no
-/// damping) and runs `work` on it between the marks.
+/// Validates the dome without its damping (a `Scene<f32, Undamped, Preload>`, whose type links
+/// no damping and no gap) and runs `work` on it between the marks.
 #[allow(dead_code)]
-pub fn measure_undamped(work: impl FnOnce(&Scene<f32, Undamped>) -> u32) {
+pub fn measure_undamped(work: impl FnOnce(&Scene<f32, Undamped, Preload>) -> u32) {
     let switch = black_box(DOME);
     cost_mark(0);
-    let scene = Scene::new(switch.contact(), Undamped);
+    let scene = Scene::new_preload(switch.contact(), Undamped);
     cost_mark(1);
     finish(scene.map(|scene| work(&black_box(scene))));
 }

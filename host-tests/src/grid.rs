@@ -68,7 +68,9 @@ impl GridScene {
         })
     }
 
-    fn contact<F: Float>(&self) -> Contact<F> {
+    /// The core's contact, in either float (what [`GridScene::core_in`] validates).
+    #[must_use]
+    pub fn contact<F: Float>(&self) -> Contact<F> {
         let r = &self.reference;
         Contact {
             frequency: Frequency::Omega(F::from_f64(r.omega)),

@@ -914,6 +914,108 @@ fn a_viscous_scene_predicts_what_the_run_time_choice_predicts() {
     assert!(checked > 1000, "{checked} predictions compared");
 }
 
+/// A scene typed by the sign of its Delta (`Scene::new_preload`, `Scene::new_gap`: the other
+/// side's code left out at compile time) predicts bit for bit what the same scene decided at
+/// run time (`Scene::new`) predicts: every tier and Auto at 10 %, 1 % and 0.1 %, in f64 and
+/// f32, on the grid and 300 scenes off it; with the same regime, the same closed forms and the
+/// same work bound. The other constructor refuses it, naming Delta; Delta = 0 is refused by both.
+#[test]
+fn a_scene_typed_by_its_sign_predicts_what_the_run_time_sign_predicts() {
+    use contact_bounce::scene::{AnySign, OffsetSign};
+    use contact_bounce::{Method, Nodes, Parameter, Reason, Scene, Tolerance, Viscous};
+    fn same<F: contact_bounce::Float, S: OffsetSign>(
+        name: &str,
+        typed: &Scene<F, Option<Viscous<F>>, S>,
+        chosen: &Scene<F, Option<Viscous<F>>, AnySign>,
+    ) -> usize {
+        assert_eq!(typed.regime(), chosen.regime(), "{name}");
+        assert_eq!(typed.t_b1v(), chosen.t_b1v(), "{name}");
+        assert_eq!(typed.t_b2r(), chosen.t_b2r(), "{name}");
+        assert_eq!(typed.exact_work(1000), chosen.exact_work(1000), "{name}");
+        let mut methods = vec![
+            Method::Closed,
+            Method::Averaged(Nodes::N8),
+            Method::Map {
+                max_impacts: 100_000,
+            },
+            Method::Exact {
+                max_impacts: contact_bounce::tiers::EXACT_MAX_IMPACTS,
+            },
+        ];
+        for tol in [0.1, 0.01, 0.001] {
+            methods.extend(Tolerance::new(F::from_f64(tol)).map(Method::Auto));
+        }
+        for m in &methods {
+            assert_eq!(typed.predict(*m), chosen.predict(*m), "{name} {m:?}");
+        }
+        methods.len()
+    }
+    fn check<F: contact_bounce::Float>(scene: &GridScene, counts: &mut [usize; 3]) {
+        let zeta = Viscous::optional(F::from_f64(scene.reference.zeta)).expect("valid zeta");
+        let contact = scene.contact::<F>();
+        let (preload, gap) = (
+            Scene::new_preload(contact, zeta),
+            Scene::new_gap(contact, zeta),
+        );
+        let Ok(chosen) = scene.core_in::<F>() else {
+            return;
+        };
+        let delta = chosen.delta();
+        if delta < F::ZERO {
+            let typed = preload.expect("a preload is accepted as one");
+            counts[0] += same(&scene.name, &typed, &chosen);
+            assert_eq!(
+                gap,
+                Err(contact_bounce::Error::new(
+                    Parameter::Delta,
+                    Reason::NotPositive
+                ))
+            );
+        } else if delta > F::ZERO {
+            let typed = gap.expect("a gap is accepted as one");
+            counts[1] += same(&scene.name, &typed, &chosen);
+            assert_eq!(
+                preload,
+                Err(contact_bounce::Error::new(
+                    Parameter::Delta,
+                    Reason::OutOfRange
+                ))
+            );
+        } else {
+            assert!(
+                preload.is_err() && gap.is_err(),
+                "{}: Delta = 0",
+                scene.name
+            );
+            counts[2] += 1;
+        }
+    }
+    let scenes: Vec<GridScene> = grid().into_iter().chain(off_grid(300, 11)).collect();
+    let mut counts = [0; 3];
+    for scene in &scenes {
+        check::<f64>(scene, &mut counts);
+        check::<f32>(scene, &mut counts);
+    }
+    eprintln!("typed by sign: {counts:?} (preload, gap predictions; Delta = 0 scenes)");
+    assert!(
+        counts[0] > 1000 && counts[1] > 1000 && counts[2] > 10,
+        "{counts:?}"
+    );
+}
+
+/// A preload force is always a preload: `Scene::new_gap` refuses it, naming the force.
+#[test]
+fn a_preload_force_is_not_a_gap() {
+    use contact_bounce::{catalogue, Error, Parameter, Reason, Scene, Viscous};
+    let d = catalogue::TACTILE_DOME;
+    let damping = Viscous::new(d.damping_ratio).expect("valid");
+    assert_eq!(
+        Scene::new_gap(d.contact::<f64>(), damping),
+        Err(Error::new(Parameter::PreloadForce, Reason::OutOfRange))
+    );
+    assert!(Scene::new_preload(d.contact::<f64>(), damping).is_ok());
+}
+
 #[test]
 fn the_f32_exact_tier_solves_the_flights_of_fast_switches() {
     // Every catalogue switch in f32 with a threshold (so that flights are solved, not summed
