@@ -26,7 +26,9 @@ mod firmware {
     }
 
     /// The tiers, in the report's column order, each followed by a mark.
-    fn tiers<D: contact_bounce::scene::Dissipation<f32>>(scene: &Scene<f32, D>) {
+    fn tiers<D: contact_bounce::scene::Dissipation<f32>, S: contact_bounce::scene::OffsetSign>(
+        scene: &Scene<f32, D, S>,
+    ) {
         let scene = black_box(scene);
         let (Ok(ten), Ok(one)) = (Tolerance::new(0.1f32), Tolerance::new(0.01f32)) else {
             return;

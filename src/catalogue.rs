@@ -5,7 +5,7 @@
 //! trusting a window in a product.
 
 use crate::error::Error;
-use crate::scene::Contact;
+use crate::scene::{Contact, Preload};
 use crate::{Float, Preloaded, Scene, Viscous};
 
 /// A typical switch: effective mass and stiffness, contact (preload) force, closing speed,
@@ -51,7 +51,8 @@ impl Typical {
         self.preloaded().contact()
     }
 
-    /// The validated scene with its viscous damping.
+    /// The validated scene with its viscous damping, typed as the preload it is (as
+    /// [`Preloaded::scene`]: a firmware that uses it links none of a gap's code).
     ///
     /// ```
     /// use contact_bounce::{catalogue, Method};
@@ -63,10 +64,10 @@ impl Typical {
     /// # Errors
     /// As [`Preloaded::scene`] (never for the catalogue's entries, in f32 or f64).
     #[inline]
-    pub fn scene<F: Float>(&self) -> Result<Scene<F, Viscous<F>>, Error> {
+    pub fn scene<F: Float>(&self) -> Result<Scene<F, Viscous<F>, Preload>, Error> {
         // Not `self.preloaded().scene()`: converting the damping last, as here, keeps a
         // firmware 88-104 bytes smaller (the size report's tier firmwares, thumbv6m and thumbv7em).
-        Scene::new(
+        Scene::new_preload(
             self.contact(),
             Viscous::new(F::from_f64(self.damping_ratio))?,
         )

@@ -26,8 +26,11 @@
 //!
 //! - [`scene`]: what a switch is. [`Scene`] is validated once from a [`Contact`] and the
 //!   mechanisms that dissipate between impacts ([`Undamped`], [`Viscous`], [`Hereditary`]);
-//!   after [`Scene::new`] succeeds nothing can fail, panic or return NaN. [`Preloaded`] is the
-//!   short path for the common preloaded switch, [`catalogue`] holds typical switches.
+//!   after [`Scene::new`] succeeds nothing can fail, panic or return NaN. The mechanisms are
+//!   part of the scene's type, and so can be the sign of its offset: a scene from
+//!   [`Scene::new_preload`] (or [`Scene::new_gap`]) links none of the other side's code.
+//!   [`Preloaded`] is the short path for the common preloaded switch, [`catalogue`] holds
+//!   typical switches (both give preload-typed scenes).
 //! - [`tiers`]: how to predict. [`Scene::predict`] with a [`Method`]: the closed forms
 //!   (nanoseconds), the averaged model, the per-impact map, the exact solution, or
 //!   [`Method::Auto`], the cheapest tier that promises a [`Tolerance`]. Each gives a

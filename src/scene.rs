@@ -3,7 +3,9 @@
 //! A [`Scene`] is built from a [`Contact`] (frequency, offset, restitution, closing speed,
 //! threshold) and the mechanisms that dissipate between impacts: [`Undamped`], [`Viscous`],
 //! [`Hereditary`] or a tuple of them ([`AnyDissipation`] when chosen at run time). The
-//! mechanisms are part of the type, so a switch without viscous damping does not link it.
+//! mechanisms are part of the type, so a switch without viscous damping does not link it; so
+//! can be the sign of Delta ([`Scene::new_preload`], [`Scene::new_gap`]: the types [`Preload`]
+//! and [`Gap`]), so a preloaded switch does not link a gap's code.
 //! [`Scene::two_body`] reduces the paper's two bodies; [`Preloaded`] is the short path for a
 //! preloaded switch. Validation limits: [`PHYSICAL_RANGE`], [`SMALLEST_RATE`],
 //! [`SMALLEST_RESTITUTION`], [`LARGEST_DAMPING`].

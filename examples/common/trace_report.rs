@@ -5,6 +5,7 @@
 #[allow(dead_code)]
 pub mod data;
 
+use contact_bounce::scene::OffsetSign;
 use contact_bounce::{
     catalogue, debounce::Polarity, scene::Dissipation, Debouncer, Float, Margin, Method, Mode,
     Scene, Tolerance, Undamped, Window, Windows,
@@ -75,9 +76,9 @@ pub fn run_restitution_only(out: &mut impl Write) -> core::fmt::Result {
 /// Auto at 10 % on `scene`, its window at the trace's sampling period widened by the
 /// expected error, and the recorded press through the debouncer in both modes, beside a guessed
 /// short hold-off.
-fn run_scene<D: Dissipation<f32>>(
+fn run_scene<D: Dissipation<f32>, S: OffsetSign>(
     out: &mut impl Write,
-    scene: &Scene<f32, D>,
+    scene: &Scene<f32, D, S>,
 ) -> core::fmt::Result {
     let period = f32::from(u16::try_from(data::PERIOD_NS).unwrap_or(u16::MAX)) * 1e-9;
     let Ok(tolerance) = Tolerance::new(0.1f32) else {
