@@ -171,6 +171,7 @@ fn predictions<F: Float + std::fmt::Debug>(rng: &mut Rng, n: usize) -> (usize, V
             if let Ok(scene) = Scene::new(contact, viscous) {
                 check_scene(&scene, &what, &mut checked, &mut faults);
             }
+            checked += typed_by_sign(contact, viscous, &what, &mut faults);
         } else if let Ok(scene) = Scene::new(contact, contact_bounce::Undamped) {
             check_scene(&scene, &what, &mut checked, &mut faults);
         }
@@ -219,6 +220,55 @@ fn predictions<F: Float + std::fmt::Debug>(rng: &mut Rng, n: usize) -> (usize, V
         }
     }
     (checked, faults)
+}
+
+/// The constructors that put the sign of Delta in the type, beside `Scene::new`: each accepts
+/// exactly the scenes of its sign that `Scene::new` accepts (a refusal of the other sign names
+/// Delta or the preload force), and its scene predicts what the run-time one does, bit for bit
+/// (the closed tier and Auto at 1 %). Returns the predictions compared.
+fn typed_by_sign<F: Float + std::fmt::Debug, D: contact_bounce::scene::Dissipation<F>>(
+    contact: Contact<F>,
+    dissipation: D,
+    what: &str,
+    faults: &mut Vec<String>,
+) -> usize {
+    let chosen = Scene::new(contact, dissipation);
+    let (preload, gap) = (
+        Scene::new_preload(contact, dissipation),
+        Scene::new_gap(contact, dissipation),
+    );
+    let sign = chosen.as_ref().map(|s| s.delta()).ok();
+    let expected = (
+        sign.is_some_and(|d| d < F::ZERO),
+        sign.is_some_and(|d| d > F::ZERO),
+    );
+    if (preload.is_ok(), gap.is_ok()) != expected {
+        faults.push(format!(
+            "typed constructors: preload {:?}, gap {:?}, run time {:?}: {what}",
+            preload.map(|_| ()),
+            gap.map(|_| ()),
+            chosen.map(|_| ())
+        ));
+        return 0;
+    }
+    let Ok(chosen) = chosen else { return 0 };
+    let auto = Tolerance::new(F::from_f64(0.01)).unwrap_or_else(|_| unreachable!());
+    let mut compared = 0;
+    for method in [Method::Closed, Method::Auto(auto)] {
+        let want = chosen.predict(method);
+        let got = match (&preload, &gap) {
+            (Ok(s), _) => s.predict(method),
+            (_, Ok(s)) => s.predict(method),
+            _ => return compared,
+        };
+        if got != want {
+            faults.push(format!(
+                "typed {got:?} != run time {want:?} ({method:?}): {what}"
+            ));
+        }
+        compared += 1;
+    }
+    compared
 }
 
 /// Every check on one accepted scene: the map walked impact by impact, the closed forms, the
