@@ -758,6 +758,40 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
     }
 }
 
+/// A preload-typed scene as one whose sign is decided at run time (to keep it beside scenes of
+/// either sign): the same scene, its tiers then carry both sides' code.
+impl<F, D> From<Scene<F, D, Preload>> for Scene<F, D, AnySign> {
+    fn from(scene: Scene<F, D, Preload>) -> Self {
+        scene.with_sign()
+    }
+}
+
+/// A gap-typed scene as one whose sign is decided at run time.
+impl<F, D> From<Scene<F, D, Gap>> for Scene<F, D, AnySign> {
+    fn from(scene: Scene<F, D, Gap>) -> Self {
+        scene.with_sign()
+    }
+}
+
+impl<F, D, S> Scene<F, D, S> {
+    /// The same scene with the sign type `T` (only where `T` admits its Delta: the `From`
+    /// conversions to [`AnySign`]).
+    fn with_sign<T: Default>(self) -> Scene<F, D, T> {
+        Scene {
+            orbit: self.orbit,
+            restitution: self.restitution,
+            loss: self.loss,
+            closing_speed: self.closing_speed,
+            threshold: self.threshold,
+            dissipation: self.dissipation,
+            regime: self.regime,
+            asymptote: self.asymptote,
+            reduction: self.reduction,
+            sign: T::default(),
+        }
+    }
+}
+
 impl<F: Float> Scene<F, AnyDissipation<F>> {
     /// A scene from two bodies (the paper's Eq. 1): reduced exactly when c1/m1 = c2/m2 and
     /// d1/m1 = d2/m2, else at the Rayleigh frequency and flagged approximate in every

@@ -8,7 +8,8 @@
 //! [`Scene::new_preload`](crate::Scene::new_preload) and
 //! [`Scene::new_gap`](crate::Scene::new_gap) check the sign once and put it in the type
 //! ([`Preload`], [`Gap`]); the tiers then ask the type, and the optimiser leaves the other
-//! side out. The predictions are the same, bit for bit.
+//! side out. The predictions are the same, bit for bit. A typed scene converts into an
+//! [`AnySign`] one with `From`, to sit beside scenes of either sign.
 
 use core::fmt::Debug;
 

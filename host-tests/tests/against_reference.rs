@@ -964,6 +964,7 @@ fn a_scene_typed_by_its_sign_predicts_what_the_run_time_sign_predicts() {
         if delta < F::ZERO {
             let typed = preload.expect("a preload is accepted as one");
             counts[0] += same(&scene.name, &typed, &chosen);
+            assert_eq!(Scene::from(typed), chosen, "{}: as AnySign", scene.name);
             assert_eq!(
                 gap,
                 Err(contact_bounce::Error::new(
@@ -974,6 +975,7 @@ fn a_scene_typed_by_its_sign_predicts_what_the_run_time_sign_predicts() {
         } else if delta > F::ZERO {
             let typed = gap.expect("a gap is accepted as one");
             counts[1] += same(&scene.name, &typed, &chosen);
+            assert_eq!(Scene::from(typed), chosen, "{}: as AnySign", scene.name);
             assert_eq!(
                 preload,
                 Err(contact_bounce::Error::new(
