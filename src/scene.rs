@@ -502,7 +502,7 @@ impl<F: Float, D: Dissipation<F>> Scene<F, D> {
     ///
     /// # Errors
     /// As [`Scene::new`]; a Delta of 0 or above is [`Parameter::Delta`] with
-    /// [`Reason::OutOfRange`] (checked before any other combination).
+    /// [`Reason::OutOfRange`] (checked right after Delta itself).
     pub fn new_preload(contact: Contact<F>, dissipation: D) -> Result<Scene<F, D, Preload>, Error> {
         Scene::build(contact, dissipation, None)
     }
