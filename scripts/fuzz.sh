@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The seeded random harnesses, long (CI runs the same tests with 10,000 scenes):
 #  - scenes (host-tests/tests/fuzz.rs): FUZZ_SCENES scenes per float (default 20,000) drawn
-#    across the accepted domain, each alone, with a kernel and as two bodies, in f32 and f64,
+#    across the accepted domain, each alone, with a kernel and as two bodies (the damped ones
+#    also typed by their sign), in f32 and f64,
 #    through every tier, MapImpacts, the closed forms, the envelope and the laws of motion;
 #  - raw-bits: FUZZ_RAW draws per float (default 3,000,000; four inputs each) of raw bit
 #    patterns and edge values into every public constructor and const fn, accepted scenes
@@ -63,7 +64,9 @@ so far is kept there as a regression test.
 - **scenes**: scenes drawn across the accepted domain (Omega 1e-2..1e9 rad/s, |Delta| 1e-15..1 m
   on both sides and 0, R from 0 to 1 - 1e-12 and 1, closing speeds 1e-9..1e6 m/s, zeta 0 and
   1e-12..1e3, with and without a threshold), in f32 and f64, each alone, with an exponential
-  kernel and as two bodies; "inputs" counts the drawn contacts of both floats.
+  kernel and as two bodies; each damped one also through \`Scene::new_preload\` and
+  \`Scene::new_gap\` (accepted exactly on its side, the same predictions); "inputs" counts the
+  drawn contacts of both floats.
 - **raw-bits**: raw bit patterns and edge values (zeros, subnormals, NaN, infinities, 1e+-30,
   R near 1) into every public constructor and const fn, in f32 and f64; the few scenes accepted
   go through every check. "inputs" counts the values drawn for constructors.

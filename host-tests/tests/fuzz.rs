@@ -565,6 +565,8 @@ fn raw_inputs<F: Float + std::fmt::Debug>(
             accepted += 1;
             check_scene(&scene, &what, &mut checked, &mut faults);
         }
+        // The sign-typed constructors: typed errors alike, and the same predictions.
+        checked += typed_by_sign(contact, viscous, &what, &mut faults);
         if let Ok(k) = kernel {
             if let Ok(scene) = Scene::new(contact, (viscous, k)) {
                 accepted += 1;
