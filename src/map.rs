@@ -294,7 +294,8 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign>(
             capped_stall = Some(F::TWO * departure);
             break;
         }
-        let flight = Oscillator::new(scene.omega(), dissipation.damping_ratio(), scene.delta());
+        let flight =
+            Oscillator::<F, S>::signed(scene.omega(), dissipation.damping_ratio(), scene.delta());
         let Landing::Returns { time, speed, .. } = flight.land(departure) else {
             break; // the last impact was the last (`impacts.end()` says so)
         };

@@ -689,7 +689,7 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
     /// [`Scene::offset_class`] would take two).
     #[inline]
     pub(crate) fn is_preload(&self) -> bool {
-        S::PRELOAD.unwrap_or_else(|| self.delta() < F::ZERO)
+        crate::sign::preload::<F, S>(self.delta())
     }
     /// Delta > 0.
     #[inline]

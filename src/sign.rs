@@ -87,6 +87,13 @@ pub(crate) fn class_of<S: OffsetSign>(runtime: OffsetClass) -> OffsetClass {
     }
 }
 
+/// Delta < 0, for a scene of sign type `S` whose Delta is `delta` (one comparison where the
+/// type leaves the sign open).
+#[inline]
+pub(crate) fn preload<F: crate::Float, S: OffsetSign>(delta: F) -> bool {
+    S::PRELOAD.unwrap_or_else(|| delta < F::ZERO)
+}
+
 /// `regime` told apart from the regimes the type rules out (a preload never has a last impact
 /// or a single impact, a gap never accumulates), so that their code is left out: the scene's
 /// validation made the excluded ones impossible, and the mapping never changes a value.

@@ -65,7 +65,7 @@ use crate::method::Walk;
 use crate::prediction::{Approximations, Count, Course, Prediction, Tier, Time};
 use crate::quadrature::{Compensated, Nodes};
 use crate::regime::Regime;
-use crate::scene::OffsetSign;
+use crate::scene::{AnySign, OffsetSign};
 use crate::{Float, Scene};
 
 /// The exact tier's default cap on solved flights: past it the averaged model finishes the
@@ -196,15 +196,17 @@ enum Damping<F> {
     Over { slow: F, fast: F },
 }
 
-/// x'' + 2 zeta Omega x' + Omega^2 x = 0 between impacts at x = Delta.
+/// x'' + 2 zeta Omega x' + Omega^2 x = 0 between impacts at x = Delta; `S`, the sign of Delta
+/// where its scene's type fixes it (a preload's flights then link no gap's branch).
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct Oscillator<F> {
+pub(crate) struct Oscillator<F, S = AnySign> {
     omega: F,
     zeta: F,
     delta: F,
     damping: Damping<F>,
     /// The fastest rate of the free motion (1/s).
     lambda: F,
+    sign: core::marker::PhantomData<S>,
 }
 
 /// How a flight that leaves the stop ends.
@@ -217,8 +219,16 @@ pub(crate) enum Landing<F> {
     Stays { grazing: bool },
 }
 
+#[cfg(test)]
 impl<F: Float> Oscillator<F> {
     pub(crate) fn new(omega: F, zeta: F, delta: F) -> Self {
+        Self::signed(omega, zeta, delta)
+    }
+}
+
+impl<F: Float, S: OffsetSign> Oscillator<F, S> {
+    /// The oscillator of a scene of sign type `S` (its `delta` on the side `S` admits).
+    pub(crate) fn signed(omega: F, zeta: F, delta: F) -> Self {
         let (damping, lambda) = if zeta < F::ONE {
             let w = omega * ((F::ONE - zeta) * (F::ONE + zeta)).sqrt();
             (
@@ -247,6 +257,7 @@ impl<F: Float> Oscillator<F> {
             delta,
             damping,
             lambda,
+            sign: core::marker::PhantomData,
         }
     }
 
@@ -406,7 +417,7 @@ impl<F: Float> Oscillator<F> {
         let high = if let Damping::Under { w, .. } = self.damping {
             low + F::PI / w
         } else {
-            if self.delta >= F::ZERO {
+            if !crate::sign::preload::<F, S>(self.delta) {
                 // Over- or critically damped above the rest position: no return.
                 return Landing::Stays { grazing: false };
             }
@@ -518,7 +529,7 @@ pub(crate) fn ends_at_first_contact<F: Float, D: Dissipation<F>, S: OffsetSign>(
     if surely_returns(scene.omega(), zeta, scene.delta(), departure) {
         return None;
     }
-    let oscillator = Oscillator::new(scene.omega(), zeta, scene.delta());
+    let oscillator = Oscillator::<F, S>::signed(scene.omega(), zeta, scene.delta());
     let Damping::Under { w, .. } = oscillator.damping else {
         return None; // over-damped gaps are the single-impact regime
     };
@@ -647,8 +658,8 @@ pub(crate) trait Flights<F> {
 
 /// Viscous damping's flights, with the next guess from the last flight.
 #[derive(Debug, Clone, Copy)]
-struct Damped<'a, F> {
-    oscillator: Oscillator<F>,
+struct Damped<'a, F, S> {
+    oscillator: Oscillator<F, S>,
     /// Omega |Delta| (m/s).
     scale: F,
     /// 1 / (Omega |Delta|) and 1 / Omega, on hosts: see [`Damped::series_guess`].
@@ -669,7 +680,7 @@ struct Damped<'a, F> {
 /// Most flights the tail walks by their series in one call (see [`Damped::tail`]).
 const WALKED_FLIGHTS: u32 = 64;
 
-impl<F: Float> Damped<'_, F> {
+impl<F: Float, S: OffsetSign> Damped<'_, F, S> {
     /// The flight from `departure` (s) by the tail's series, where it reaches. On hosts the
     /// departure is brought to the series' units and the flight back to seconds by
     /// multiplying with reciprocals kept from the start: two divisions that waited on each
@@ -694,9 +705,10 @@ impl<F: Float> Damped<'_, F> {
     }
 }
 
-impl<F: Float> Flights<F> for Damped<'_, F> {
+impl<F: Float, S: OffsetSign> Flights<F> for Damped<'_, F, S> {
     fn land(&mut self, departure: F) -> Landing<F> {
         let (omega, delta) = (self.oscillator.omega, self.oscillator.delta);
+        let preload = crate::sign::preload::<F, S>(delta);
         // The first guess: the flight's series where it reaches, else the last flight scaled
         // as the undamped flights scale, else (a preload's first flight) the undamped flight.
         // Where the guess is off by more than Halley's window, the bracketed search decides.
@@ -711,10 +723,10 @@ impl<F: Float> Flights<F> for Damped<'_, F> {
         }
         let undamped = F::TWO / omega * departure.atan2(-omega * delta);
         let scaled = match self.previous {
-            Some((flight, undamped_before)) if delta < F::ZERO && undamped_before > F::ZERO => {
+            Some((flight, undamped_before)) if preload && undamped_before > F::ZERO => {
                 Some(flight * (undamped / undamped_before))
             }
-            None if delta < F::ZERO && undamped > F::ZERO => Some(undamped),
+            None if preload && undamped > F::ZERO => Some(undamped),
             _ => None,
         };
         let guessed = scaled.and_then(|guess| self.oscillator.halley(departure, guess));
@@ -802,7 +814,7 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign>(
     .then_some(&tail);
     let scale = scene.omega() * scene.delta().abs();
     let flights = Damped {
-        oscillator: Oscillator::new(scene.omega(), zeta, scene.delta()),
+        oscillator: Oscillator::<F, S>::signed(scene.omega(), zeta, scene.delta()),
         scale,
         #[cfg(not(target_os = "none"))]
         reciprocals: (F::ONE / scale, F::ONE / scene.omega()),
