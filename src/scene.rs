@@ -257,11 +257,14 @@ pub(crate) fn lean_preload<F: Float>(
     })
 }
 
-/// Delta (validated, so a number) on the side the scene type `S` admits.
+/// Delta (validated, so a number) on the side the scene type `S` admits. Tested as the
+/// comparisons the mechanisms make (`delta < 0`, `delta > 0`), so that where the scene is
+/// built those are known and the other side's asymptote is left out.
+#[allow(clippy::neg_cmp_op_on_partial_ord)] // delta is a number here; see above
 fn check_sign<F: Float, S: OffsetSign>(delta: F, offset: Offset<F>) -> Result<(), Error> {
     match S::PRELOAD {
-        Some(true) if delta >= F::ZERO => Err(Error::new(Parameter::Delta, Reason::OutOfRange)),
-        Some(false) if delta <= F::ZERO => Err(match offset {
+        Some(true) if !(delta < F::ZERO) => Err(Error::new(Parameter::Delta, Reason::OutOfRange)),
+        Some(false) if !(delta > F::ZERO) => Err(match offset {
             Offset::PreloadForce(_) => Error::new(Parameter::PreloadForce, Reason::OutOfRange),
             Offset::Delta(_) => Error::new(Parameter::Delta, Reason::NotPositive),
         }),
