@@ -76,7 +76,7 @@ mod firmware {
             }
         }
         for r in [0.9, 0.95] {
-            let scene = Viscous::new(black_box(0.03)).and_then(|v| Scene::new(dome(r), v));
+            let scene = Viscous::new(black_box(0.03)).and_then(|v| Scene::new_preload(dome(r), v));
             cost_mark(1);
             if let Ok(scene) = scene {
                 tiers(&scene);
@@ -90,7 +90,7 @@ mod firmware {
             (3e9, 1e-6, 0.7),
         ] {
             let scene = Hereditary::exponential(black_box(kappa), black_box(tau))
-                .and_then(|k| Scene::new(dome(r), k));
+                .and_then(|k| Scene::new_preload(dome(r), k));
             cost_mark(1);
             if let Ok(scene) = scene {
                 tiers(&scene);
