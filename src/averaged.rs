@@ -13,8 +13,7 @@ use crate::mechanisms::Dissipation;
 use crate::prediction::{Approximations, Count, Course, Prediction, Tier, Time};
 use crate::quadrature::{integrate_exp, panel, Nodes, MAX_PANELS, PANEL_WIDTH};
 use crate::regime::Regime;
-use crate::scene::lean_preload;
-use crate::scene::{AnySign, OffsetSign};
+use crate::scene::{lean_preload, AnySign, OffsetSign};
 use crate::{accuracy, Float, Scene};
 
 /// The averaged model's bounce time (s) of a preloaded contact with restitution alone, straight

@@ -10,8 +10,7 @@ use crate::mechanisms::{Dissipation, OffsetClass};
 use crate::prediction::{Approximations, ClosedForm, Count, Course, Prediction, Tier, Time};
 use crate::quadrature::Compensated;
 use crate::regime::Regime;
-use crate::scene::lean_preload;
-use crate::scene::OffsetSign;
+use crate::scene::{lean_preload, OffsetSign};
 use crate::{accuracy, Float, Scene};
 
 /// A closed-form time with the error to expect of it. The methods that give one
@@ -247,7 +246,7 @@ fn impacts_above_geometric<F: Float>(first: F, threshold: F, decay: F) -> F {
 
 impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
     fn preload_scale(&self) -> Option<F> {
-        (self.is_preload()).then(|| self.omega() * self.delta().abs())
+        self.is_preload().then(|| self.omega() * self.delta().abs())
     }
 
     /// t_b1 = J_B / (r Omega^2 |Delta|) (docs/physics.md sec. 5): preload, R < 1, restitution only.
