@@ -865,6 +865,25 @@ fn the_exact_tier_solves_kernels_off_the_grid() {
     assert!(solved >= 190, "{solved}");
 }
 
+/// Every tier, and Auto at 10 %, 1 % and 0.1 %: what two builds of one scene must agree on.
+fn every_method<F: contact_bounce::Float>() -> Vec<contact_bounce::Method<F>> {
+    use contact_bounce::{Method, Nodes, Tolerance};
+    let mut methods = vec![
+        Method::Closed,
+        Method::Averaged(Nodes::N8),
+        Method::Map {
+            max_impacts: 100_000,
+        },
+        Method::Exact {
+            max_impacts: contact_bounce::tiers::EXACT_MAX_IMPACTS,
+        },
+    ];
+    for tol in [0.1, 0.01, 0.001] {
+        methods.extend(Tolerance::new(F::from_f64(tol)).map(Method::Auto));
+    }
+    methods
+}
+
 /// A damped scene typed `Viscous` (always dissipating, so its undamped paths are left out at
 /// compile time) predicts bit for bit what the same scene as `Option<Viscous>` (damping chosen
 /// at run time) predicts: every tier and Auto at 10 %, 1 % and 0.1 %, in f64 and f32, on the
@@ -872,7 +891,6 @@ fn the_exact_tier_solves_kernels_off_the_grid() {
 /// sums).
 #[test]
 fn a_viscous_scene_predicts_what_the_run_time_choice_predicts() {
-    use contact_bounce::{Method, Nodes, Tolerance};
     fn same<F: contact_bounce::Float>(scene: &GridScene, checked: &mut usize) {
         let Some(typed) = scene.core_damped::<F>() else {
             return;
@@ -887,19 +905,7 @@ fn a_viscous_scene_predicts_what_the_run_time_choice_predicts() {
         let (Ok(typed), Ok(chosen)) = (typed, chosen) else {
             return;
         };
-        let mut methods = vec![
-            Method::Closed,
-            Method::Averaged(Nodes::N8),
-            Method::Map {
-                max_impacts: 100_000,
-            },
-            Method::Exact {
-                max_impacts: contact_bounce::tiers::EXACT_MAX_IMPACTS,
-            },
-        ];
-        for tol in [0.1, 0.01, 0.001] {
-            methods.extend(Tolerance::new(F::from_f64(tol)).map(Method::Auto));
-        }
+        let methods = every_method::<F>();
         for m in methods {
             assert_eq!(typed.predict(m), chosen.predict(m), "{} {m:?}", scene.name);
             *checked += 1;
@@ -922,7 +928,7 @@ fn a_viscous_scene_predicts_what_the_run_time_choice_predicts() {
 #[test]
 fn a_scene_typed_by_its_sign_predicts_what_the_run_time_sign_predicts() {
     use contact_bounce::scene::{AnySign, OffsetSign};
-    use contact_bounce::{Method, Nodes, Parameter, Reason, Scene, Tolerance, Viscous};
+    use contact_bounce::{Parameter, Reason, Scene, Viscous};
     fn same<F: contact_bounce::Float, S: OffsetSign>(
         name: &str,
         typed: &Scene<F, Option<Viscous<F>>, S>,
@@ -932,19 +938,7 @@ fn a_scene_typed_by_its_sign_predicts_what_the_run_time_sign_predicts() {
         assert_eq!(typed.t_b1v(), chosen.t_b1v(), "{name}");
         assert_eq!(typed.t_b2r(), chosen.t_b2r(), "{name}");
         assert_eq!(typed.exact_work(1000), chosen.exact_work(1000), "{name}");
-        let mut methods = vec![
-            Method::Closed,
-            Method::Averaged(Nodes::N8),
-            Method::Map {
-                max_impacts: 100_000,
-            },
-            Method::Exact {
-                max_impacts: contact_bounce::tiers::EXACT_MAX_IMPACTS,
-            },
-        ];
-        for tol in [0.1, 0.01, 0.001] {
-            methods.extend(Tolerance::new(F::from_f64(tol)).map(Method::Auto));
-        }
+        let methods = every_method::<F>();
         for m in &methods {
             assert_eq!(typed.predict(*m), chosen.predict(*m), "{name} {m:?}");
         }
