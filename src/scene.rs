@@ -588,7 +588,8 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
             return Err(Error::new(Parameter::Threshold, Reason::Required));
         }
         let orbit = Orbit::new(omega, delta);
-        let asymptote = restitution_asymptote(loss, &orbit).plus(dissipation.asymptote(&orbit));
+        let asymptote = restitution_asymptote::<F, S>(loss, &orbit)
+            .plus(dissipation.asymptote_for::<S>(&orbit));
         let restitution_given = match contact.restitution {
             Restitution::Coefficient(_) => Parameter::Restitution,
             Restitution::Loss(_) => Parameter::OneMinusRestitution,

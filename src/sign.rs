@@ -24,7 +24,7 @@ mod sealed {
 ///
 /// A scene from [`Scene::new`](crate::Scene::new) ([`AnySign`]) decides at run time whether it
 /// is a preload, a gap or grazing, so every tier it calls carries the code of all three (on an
-/// Arduino Uno a preloaded dome's closed tier linked 6.5 KB of a gap's code).
+/// Arduino Uno a preloaded dome's closed tier linked 6.9 KB of a gap's code).
 /// [`Scene::new_preload`](crate::Scene::new_preload) and
 /// [`Scene::new_gap`](crate::Scene::new_gap) check the sign once and put it in the type; the
 /// predictions are the same, bit for bit. `From` turns a typed scene back into an [`AnySign`]

@@ -3,6 +3,7 @@
 use super::{offset_class, sealed, Asymptote, Dissipation, OffsetClass};
 use crate::error::{derived, physical, positive, Error, Parameter, Reason};
 use crate::orbit::{Orbit, OrbitPoint};
+use crate::scene::OffsetSign;
 use crate::Float;
 
 /// Hereditary damping by the relaxation kernel Gamma(t) = kappa exp(-t / tau).
@@ -240,9 +241,9 @@ impl<F: Float> Dissipation<F> for Hereditary<F> {
         let two_pi2 = F::TWO * F::PI * F::PI;
         -two_pi2 * point.impulse() * self.harmonic_sum(point).value
     }
-    fn asymptote(&self, orbit: &Orbit<F>) -> Asymptote<F> {
+    fn asymptote_for<S: OffsetSign>(&self, orbit: &Orbit<F>) -> Asymptote<F> {
         let mut out = Asymptote::zero();
-        match offset_class(orbit) {
+        match crate::sign::class_of::<S>(offset_class(orbit)) {
             // theta -> 0: the rate vanishes faster than J (like J theta^2).
             OffsetClass::Preload => {}
             // theta -> pi: the k = 1 term gives -2 Omega^2 Delta^2 g(Omega) / J.

@@ -20,7 +20,7 @@ use core::fmt::Debug;
 use crate::float::{ln1p_ratio, log_growth_of_ratio};
 use crate::orbit::{Orbit, OrbitPoint};
 use crate::prediction::{Count, Time};
-use crate::scene::OffsetSign;
+use crate::scene::{AnySign, OffsetSign};
 use crate::Float;
 
 pub(crate) mod sealed {
@@ -167,7 +167,12 @@ pub trait Dissipation<F: Float>: sealed::Sealed + Copy + Debug {
     /// This mechanism's contribution to E1(J) at an orbit point (m/s^2, <= 0).
     fn rate(&self, point: &OrbitPoint<F>) -> F;
     /// This mechanism's small-impulse asymptote on `orbit`.
-    fn asymptote(&self, orbit: &Orbit<F>) -> Asymptote<F>;
+    fn asymptote(&self, orbit: &Orbit<F>) -> Asymptote<F> {
+        self.asymptote_for::<AnySign>(orbit)
+    }
+    /// [`Dissipation::asymptote`] for a scene of sign type `S` (the same value): where `S` fixes
+    /// the sign of Delta, the other sides' terms are left out of the code.
+    fn asymptote_for<S: OffsetSign>(&self, orbit: &Orbit<F>) -> Asymptote<F>;
     /// The static stiffness it takes from the spring, per unit mass (1/s^2): kappa tau for a
     /// relaxation kernel (its force kappa y tends to kappa tau x for slow motion), 0 otherwise.
     /// The averaged model keeps only the dissipative part; this is the part it leaves out.
@@ -208,7 +213,7 @@ impl<F: Float> Dissipation<F> for Undamped {
         F::ZERO
     }
     #[inline]
-    fn asymptote(&self, _orbit: &Orbit<F>) -> Asymptote<F> {
+    fn asymptote_for<S: OffsetSign>(&self, _orbit: &Orbit<F>) -> Asymptote<F> {
         Asymptote::zero()
     }
 }
@@ -229,9 +234,9 @@ impl<F: Float, A: Dissipation<F>> Dissipation<F> for Option<A> {
     fn rate(&self, point: &OrbitPoint<F>) -> F {
         self.as_ref().map_or(F::ZERO, |m| m.rate(point))
     }
-    fn asymptote(&self, orbit: &Orbit<F>) -> Asymptote<F> {
+    fn asymptote_for<S: OffsetSign>(&self, orbit: &Orbit<F>) -> Asymptote<F> {
         self.as_ref()
-            .map_or(Asymptote::zero(), |m| m.asymptote(orbit))
+            .map_or(Asymptote::zero(), |m| m.asymptote_for::<S>(orbit))
     }
     fn static_stiffness(&self) -> F {
         self.as_ref().map_or(F::ZERO, Dissipation::static_stiffness)
@@ -257,8 +262,10 @@ impl<F: Float, A: Dissipation<F>, B: Dissipation<F>> Dissipation<F> for (A, B) {
     fn rate(&self, point: &OrbitPoint<F>) -> F {
         self.0.rate(point) + self.1.rate(point)
     }
-    fn asymptote(&self, orbit: &Orbit<F>) -> Asymptote<F> {
-        self.0.asymptote(orbit).plus(self.1.asymptote(orbit))
+    fn asymptote_for<S: OffsetSign>(&self, orbit: &Orbit<F>) -> Asymptote<F> {
+        self.0
+            .asymptote_for::<S>(orbit)
+            .plus(self.1.asymptote_for::<S>(orbit))
     }
     fn static_stiffness(&self) -> F {
         self.0.static_stiffness() + self.1.static_stiffness()

@@ -2,6 +2,7 @@
 
 use super::{offset_class, Asymptote, OffsetClass};
 use crate::orbit::{Orbit, OrbitPoint};
+use crate::scene::OffsetSign;
 use crate::Float;
 
 /// The restitution term of E1: -(1 - R) J / T(J) (m/s^2), with `one_minus_r` = 1 - R.
@@ -22,10 +23,13 @@ pub fn restitution_rate<F: Float>(one_minus_r: F, point: &OrbitPoint<F>) -> F {
 
 /// Small-J asymptote of the restitution term (docs/physics.md sec. 4): preload r Omega^2 |Delta|,
 /// gap r Omega J / (2 pi), Delta = 0 exactly r Omega J / pi.
-pub(crate) fn restitution_asymptote<F: Float>(one_minus_r: F, orbit: &Orbit<F>) -> Asymptote<F> {
+pub(crate) fn restitution_asymptote<F: Float, S: OffsetSign>(
+    one_minus_r: F,
+    orbit: &Orbit<F>,
+) -> Asymptote<F> {
     let omega = orbit.omega();
     let mut out = Asymptote::zero();
-    match offset_class(orbit) {
+    match crate::sign::class_of::<S>(offset_class(orbit)) {
         OffsetClass::Preload => out.constant = one_minus_r * omega * omega * orbit.delta().abs(),
         OffsetClass::Gap => out.linear = one_minus_r * omega / (F::TWO * F::PI),
         OffsetClass::Grazing => out.linear = one_minus_r * omega / F::PI,

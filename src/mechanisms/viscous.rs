@@ -3,6 +3,7 @@
 use super::{offset_class, sealed, Asymptote, Dissipation, OffsetClass};
 use crate::error::{non_negative, Error, Parameter, Reason};
 use crate::orbit::{Orbit, OrbitPoint};
+use crate::scene::OffsetSign;
 use crate::Float;
 
 /// Viscous damping of ratio zeta (x'' + 2 zeta Omega x' + Omega^2 x = 0 in flight).
@@ -114,10 +115,10 @@ impl<F: Float> Dissipation<F> for Viscous<F> {
         let h2_over_j = two_theta * (two_theta * j) + scaled * (scaled / j);
         -self.zeta * point.natural_frequency() * h2_over_j * loss
     }
-    fn asymptote(&self, orbit: &Orbit<F>) -> Asymptote<F> {
+    fn asymptote_for<S: OffsetSign>(&self, orbit: &Orbit<F>) -> Asymptote<F> {
         let omega = orbit.omega();
         let mut out = Asymptote::zero();
-        match offset_class(orbit) {
+        match crate::sign::class_of::<S>(offset_class(orbit)) {
             // -(2/3) zeta Omega J
             OffsetClass::Preload => out.linear = F::TWO * self.zeta * omega / F::from_f64(3.0),
             // -4 zeta Omega^3 Delta^2 / J = -zeta Omega q^2 / J
