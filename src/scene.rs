@@ -589,7 +589,7 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
         }
         let orbit = Orbit::new(omega, delta);
         let asymptote = restitution_asymptote::<F, S>(loss, &orbit)
-            .plus(dissipation.asymptote_for::<S>(&orbit));
+            .plus(dissipation.asymptote_for::<S>(&orbit, crate::mechanisms::sealed::Private(())));
         let restitution_given = match contact.restitution {
             Restitution::Coefficient(_) => Parameter::Restitution,
             Restitution::Loss(_) => Parameter::OneMinusRestitution,

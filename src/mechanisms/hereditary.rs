@@ -241,7 +241,7 @@ impl<F: Float> Dissipation<F> for Hereditary<F> {
         let two_pi2 = F::TWO * F::PI * F::PI;
         -two_pi2 * point.impulse() * self.harmonic_sum(point).value
     }
-    fn asymptote_for<S: OffsetSign>(&self, orbit: &Orbit<F>) -> Asymptote<F> {
+    fn asymptote_for<S: OffsetSign>(&self, orbit: &Orbit<F>, _: sealed::Private) -> Asymptote<F> {
         let mut out = Asymptote::zero();
         match crate::sign::class_of::<S>(offset_class(orbit)) {
             // theta -> 0: the rate vanishes faster than J (like J theta^2).

@@ -25,6 +25,10 @@ use crate::Float;
 
 pub(crate) mod sealed {
     pub trait Sealed {}
+    /// A token only this crate can make: a trait method that takes one cannot be called from
+    /// outside it.
+    #[derive(Debug, Clone, Copy)]
+    pub struct Private(pub(crate) ());
 }
 
 /// The small-impulse asymptote of an averaged rate: E1(J) -> -(constant + linear J + inverse / J)
@@ -168,11 +172,14 @@ pub trait Dissipation<F: Float>: sealed::Sealed + Copy + Debug {
     fn rate(&self, point: &OrbitPoint<F>) -> F;
     /// This mechanism's small-impulse asymptote on `orbit`.
     fn asymptote(&self, orbit: &Orbit<F>) -> Asymptote<F> {
-        self.asymptote_for::<AnySign>(orbit)
+        self.asymptote_for::<AnySign>(orbit, sealed::Private(()))
     }
-    /// [`Dissipation::asymptote`] for a scene of sign type `S` (the same value): where `S` fixes
-    /// the sign of Delta, the other sides' terms are left out of the code.
-    fn asymptote_for<S: OffsetSign>(&self, orbit: &Orbit<F>) -> Asymptote<F>;
+    /// [`Dissipation::asymptote`] for the orbit of a scene of sign type `S`, whose Delta has the
+    /// sign `S` admits (the same value): where `S` fixes the sign, the other sides' terms are
+    /// left out of the code. Only the crate can call it (its scenes' build): an orbit of the
+    /// other sign would get the wrong side's terms.
+    #[doc(hidden)]
+    fn asymptote_for<S: OffsetSign>(&self, orbit: &Orbit<F>, _: sealed::Private) -> Asymptote<F>;
     /// The static stiffness it takes from the spring, per unit mass (1/s^2): kappa tau for a
     /// relaxation kernel (its force kappa y tends to kappa tau x for slow motion), 0 otherwise.
     /// The averaged model keeps only the dissipative part; this is the part it leaves out.
@@ -213,7 +220,7 @@ impl<F: Float> Dissipation<F> for Undamped {
         F::ZERO
     }
     #[inline]
-    fn asymptote_for<S: OffsetSign>(&self, _orbit: &Orbit<F>) -> Asymptote<F> {
+    fn asymptote_for<S: OffsetSign>(&self, _: &Orbit<F>, _: sealed::Private) -> Asymptote<F> {
         Asymptote::zero()
     }
 }
@@ -234,9 +241,9 @@ impl<F: Float, A: Dissipation<F>> Dissipation<F> for Option<A> {
     fn rate(&self, point: &OrbitPoint<F>) -> F {
         self.as_ref().map_or(F::ZERO, |m| m.rate(point))
     }
-    fn asymptote_for<S: OffsetSign>(&self, orbit: &Orbit<F>) -> Asymptote<F> {
+    fn asymptote_for<S: OffsetSign>(&self, orbit: &Orbit<F>, p: sealed::Private) -> Asymptote<F> {
         self.as_ref()
-            .map_or(Asymptote::zero(), |m| m.asymptote_for::<S>(orbit))
+            .map_or(Asymptote::zero(), |m| m.asymptote_for::<S>(orbit, p))
     }
     fn static_stiffness(&self) -> F {
         self.as_ref().map_or(F::ZERO, Dissipation::static_stiffness)
@@ -262,10 +269,10 @@ impl<F: Float, A: Dissipation<F>, B: Dissipation<F>> Dissipation<F> for (A, B) {
     fn rate(&self, point: &OrbitPoint<F>) -> F {
         self.0.rate(point) + self.1.rate(point)
     }
-    fn asymptote_for<S: OffsetSign>(&self, orbit: &Orbit<F>) -> Asymptote<F> {
+    fn asymptote_for<S: OffsetSign>(&self, orbit: &Orbit<F>, p: sealed::Private) -> Asymptote<F> {
         self.0
-            .asymptote_for::<S>(orbit)
-            .plus(self.1.asymptote_for::<S>(orbit))
+            .asymptote_for::<S>(orbit, p)
+            .plus(self.1.asymptote_for::<S>(orbit, p))
     }
     fn static_stiffness(&self) -> F {
         self.0.static_stiffness() + self.1.static_stiffness()

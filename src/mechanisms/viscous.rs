@@ -115,7 +115,7 @@ impl<F: Float> Dissipation<F> for Viscous<F> {
         let h2_over_j = two_theta * (two_theta * j) + scaled * (scaled / j);
         -self.zeta * point.natural_frequency() * h2_over_j * loss
     }
-    fn asymptote_for<S: OffsetSign>(&self, orbit: &Orbit<F>) -> Asymptote<F> {
+    fn asymptote_for<S: OffsetSign>(&self, orbit: &Orbit<F>, _: sealed::Private) -> Asymptote<F> {
         let omega = orbit.omega();
         let mut out = Asymptote::zero();
         match crate::sign::class_of::<S>(offset_class(orbit)) {
