@@ -14,7 +14,7 @@ mod firmware;
 
 #[cfg(any(target_os = "none", target_arch = "avr"))]
 fn work() {
-    firmware::measure(|scene| firmware::window(&scene.predict(contact_bounce::Method::Closed)));
+    firmware::measure(|scene| firmware::window_of(scene, contact_bounce::Method::Closed));
 }
 
 #[cfg(not(any(target_os = "none", target_arch = "avr")))]

@@ -15,9 +15,12 @@ mod firmware;
 #[cfg(any(target_os = "none", target_arch = "avr"))]
 fn work() {
     firmware::measure(|scene| {
-        firmware::window(&scene.predict(contact_bounce::Method::Exact {
-            max_impacts: contact_bounce::tiers::EXACT_MAX_IMPACTS,
-        }))
+        firmware::window_of(
+            scene,
+            contact_bounce::Method::Exact {
+                max_impacts: contact_bounce::tiers::EXACT_MAX_IMPACTS,
+            },
+        )
     });
 }
 

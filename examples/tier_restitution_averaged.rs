@@ -15,8 +15,9 @@ mod firmware;
 #[cfg(any(target_os = "none", target_arch = "avr"))]
 fn work() {
     firmware::measure_undamped(|scene| {
-        firmware::window(
-            &scene.predict(contact_bounce::Method::Averaged(contact_bounce::Nodes::N8)),
+        firmware::window_of(
+            scene,
+            contact_bounce::Method::Averaged(contact_bounce::Nodes::N8),
         )
     });
 }

@@ -217,8 +217,8 @@ def v0(name):
         return name
     rest, out, i = name[2:], [], 0
     while i < len(rest):
-        if rest[i] == "B" or (rest[i] in "CN" and rest[i + 1:i + 2] == "s"):
-            # a back-reference, or a crate's or a namespace's hash
+        if rest[i] == "B" or (rest[i] in "CN" and rest[i + 1:i + 2] == "s") or rest[i:i + 2] == "Kb":
+            # a back-reference, a crate's or a namespace's hash, or a const bool argument
             end = rest.find("_", i + 1)
             i = i + 1 if end < 0 else end + 1
             continue
@@ -264,7 +264,10 @@ marks_qemu() { # elf target -> one count per interval between marks
   echo "\`examples/tier_*.rs\`: the tactile dome written as f32 constants (as firmware writes its switch:"
   echo "no f64 catalogue converted at run time), hidden from the optimiser and validated as the preload it is"
   echo "(\`Preloaded::scene\`, a \`Scene<f32, Viscous<f32>, Preload>\`: no gap's code linked), one tier named as a constant (so it alone is"
-  echo "linked), its window at 10 us samples stored to a volatile. Crate bytes: the firmware's text minus"
+  echo "linked), its window at 10 us samples by \`Window::from_scene\` (the bounce time alone: no counts and no"
+  echo "expected error worked out or linked; Auto computes them to choose its tier, so its firmware asks"
+  echo "\`Scene::predict\`) stored to a volatile. The size report's \`size_tier_*\` firmware link the whole"
+  echo "prediction. Crate bytes: the firmware's text minus"
   echo "\`tier_empty\`'s, the same skeleton with no crate code (thumbv6m: EMPTY6, thumbv7em: EMPTY7, Uno: EMPTYU"
   echo "bytes). The count is the call of the tier and its window (scene validation apart): instructions"
   echo "on Cortex-M (QEMU), cycles on the Uno (simavr). tb1v-window is the lean closed form"

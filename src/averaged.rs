@@ -328,10 +328,19 @@ impl<'a, F: Float, D: Dissipation<F>, S: OffsetSign> Averaged<'a, F, D, S> {
     #[must_use]
     #[cfg_attr(target_arch = "avr", inline(never))]
     pub fn predict(&self) -> Prediction<F> {
-        self.predict_unchecked().within_range()
+        self.predict_as::<true>().within_range()
     }
 
-    fn predict_unchecked(&self) -> Prediction<F> {
+    /// The times of [`Averaged::predict`] alone (see [`Scene::bounce_time`]): its counts are
+    /// worked out, its expected error is not (`None`, a placeholder no caller reads), and
+    /// nothing is brought within range. Outlined on AVR, as [`Averaged::predict`].
+    #[cfg_attr(target_arch = "avr", inline(never))]
+    pub(crate) fn predict_times(&self) -> Prediction<F> {
+        self.predict_as::<false>()
+    }
+
+    /// The prediction, with every field (`FULL`) or without the expected error.
+    fn predict_as<const FULL: bool>(&self) -> Prediction<F> {
         if let Some(p) = crate::regime::answer(self.scene) {
             return p;
         }
@@ -379,11 +388,15 @@ impl<'a, F: Float, D: Dissipation<F>, S: OffsetSign> Averaged<'a, F, D, S> {
         } else {
             Approximations::NONE
         };
-        let expected = accuracy::with_reduction(
-            self.scene,
-            accuracy::averaged(self.scene, impacts_total.value())
-                .map(|e| e + accuracy::quadrature::<F>(self.nodes)),
-        );
+        let expected = if FULL {
+            accuracy::with_reduction(
+                self.scene,
+                accuracy::averaged(self.scene, impacts_total.value())
+                    .map(|e| e + accuracy::quadrature::<F>(self.nodes)),
+            )
+        } else {
+            None
+        };
         Prediction::of_tier(
             self.scene,
             Course {

@@ -409,8 +409,11 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
 ///
 /// Never inlined: it was outlined while the exact tier called it as well, and inlined into a
 /// firmware's one caller it is larger (920 B on the Uno, 296 B on the M4F).
+///
+/// `FULL`: every field (false: the times alone, see [`Scene::bounce_time`]; the counts are
+/// then `Infinite` and the expected error `None`, placeholders no caller reads).
 #[inline(never)]
-pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign>(
+pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign, const FULL: bool>(
     scene: &Scene<F, D, S>,
 ) -> Prediction<F> {
     if let Some(p) = crate::regime::answer(scene) {
@@ -440,11 +443,18 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign>(
             asymptote.fall_time(start, F::ZERO),
         ),
     };
-    let impacts_total = add_one(asymptote.fall_count::<S>(scene.orbit(), start, F::ZERO));
+    let count_to = |low: F| {
+        if FULL {
+            add_one(asymptote.fall_count::<S>(scene.orbit(), start, low))
+        } else {
+            Count::Infinite
+        }
+    };
+    let impacts_total = count_to(F::ZERO);
     let (last_above_time, impacts_above) = match scene.threshold_generating() {
         Some(end) => (
             asymptote.fall_time(start, end).min_with(end_time),
-            add_one(asymptote.fall_count::<S>(scene.orbit(), start, end)).min_with(impacts_total),
+            count_to(end).min_with(impacts_total),
         ),
         None => (end_time, impacts_total),
     };
@@ -458,7 +468,11 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign>(
         },
         Tier::Closed(form),
         Approximations::NONE,
-        accuracy::with_reduction(scene, expected),
+        if FULL {
+            accuracy::with_reduction(scene, expected)
+        } else {
+            None
+        },
     )
 }
 

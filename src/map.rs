@@ -245,9 +245,11 @@ impl<F: Float> Tally<F> {
     }
 }
 
-/// The map's prediction, iterating at most `max_impacts` impacts.
+/// The map's prediction, iterating at most `max_impacts` impacts. `FULL`: every field (false:
+/// the times alone, see [`Scene::bounce_time`]; the counts of an asymptotic tail are then
+/// `Infinite` and the expected error `None`, placeholders no caller reads).
 #[allow(clippy::too_many_lines)] // one loop and its hand-over; splitting it would hide the state
-pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign>(
+pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign, const FULL: bool>(
     scene: &Scene<F, D, S>,
     max_impacts: u32,
 ) -> Prediction<F> {
@@ -364,7 +366,12 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign>(
                     (dt, dn)
                 } else {
                     let a = scene.asymptote();
-                    (a.fall_time(j, low), a.fall_count::<S>(orbit, j, low))
+                    let time = a.fall_time(j, low);
+                    if FULL {
+                        (time, a.fall_count::<S>(orbit, j, low))
+                    } else {
+                        (time, Count::Infinite)
+                    }
                 }
             };
             // The rest of the threshold count, if the threshold was not crossed yet.
@@ -393,8 +400,12 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign>(
     } else {
         (end_time, impacts_total)
     };
-    let mut expected = accuracy::with_reduction(scene, accuracy::map(scene, impacts_total.value()));
-    if approximations.contains(Approximations::MAP_CONTINUED_AVERAGED) {
+    let mut expected = if FULL {
+        accuracy::with_reduction(scene, accuracy::map(scene, impacts_total.value()))
+    } else {
+        None
+    };
+    if FULL && approximations.contains(Approximations::MAP_CONTINUED_AVERAGED) {
         let averaged = accuracy::averaged(scene, impacts_total.value());
         expected = match (expected, averaged) {
             (Some(a), Some(b)) => Some(a.max(b)),

@@ -165,13 +165,44 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
     #[inline(always)]
     pub fn predict(&self, method: Method<F>) -> Prediction<F> {
         match method {
-            Method::Closed => closed::predict(self),
+            Method::Closed => closed::predict::<F, D, S, true>(self),
             Method::Averaged(nodes) => Averaged::new(self, nodes).predict(),
-            Method::Map { max_impacts } => map::predict(self, max_impacts),
-            Method::Exact { max_impacts } => exact::predict(self, max_impacts),
+            Method::Map { max_impacts } => map::predict::<F, D, S, true>(self, max_impacts),
+            Method::Exact { max_impacts } => exact::predict::<F, D, S, true>(self, max_impacts),
             Method::Auto(tolerance) => self.auto(tolerance),
         }
         .within_range()
+    }
+
+    /// The time a debounce window must cover, as [`predict`](Scene::predict) then
+    /// [`Prediction::bounce_time`] give it (the same number, bit for bit), worked out without
+    /// the counts and the expected error a [`Prediction`] carries: firmware that asks only for
+    /// a window links none of their code (on the tactile dome in f32, 0.8-2.1 KB less per tier
+    /// on a Cortex-M4F and 1.4-4.3 KB on the Uno: "One firmware per tier" in the repository's
+    /// `docs/cost-report.md`). `Method::Auto` chooses its tier by the expected errors, so it
+    /// computes them all the same. `None` where [`Prediction::bounce_time`] is `None` (no end
+    /// and no threshold time: both beyond the float's range).
+    /// [`Window::from_scene`](crate::Window::from_scene) turns it into a window.
+    ///
+    /// ```
+    /// use contact_bounce::{catalogue, Method};
+    /// let dome = catalogue::TACTILE_DOME.scene::<f32>()?;
+    /// let map = Method::Map { max_impacts: 10_000 };
+    /// assert_eq!(dome.bounce_time(map), dome.predict(map).bounce_time());
+    /// # Ok::<(), contact_bounce::Error>(())
+    /// ```
+    #[must_use]
+    #[allow(clippy::inline_always)] // a dispatch on the method, as `predict`'s
+    #[inline(always)]
+    pub fn bounce_time(&self, method: Method<F>) -> Option<F> {
+        match method {
+            Method::Closed => closed::predict::<F, D, S, false>(self),
+            Method::Averaged(nodes) => Averaged::new(self, nodes).predict_times(),
+            Method::Map { max_impacts } => map::predict::<F, D, S, false>(self, max_impacts),
+            Method::Exact { max_impacts } => exact::predict::<F, D, S, false>(self, max_impacts),
+            Method::Auto(tolerance) => self.auto(tolerance),
+        }
+        .bounce_time_in_range()
     }
 
     /// The averaged model, for its envelope J(t) and laws of motion.
@@ -181,7 +212,7 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
     }
 
     fn auto(&self, tolerance: Tolerance<F>) -> Prediction<F> {
-        let closed = closed::predict(self);
+        let closed = closed::predict::<F, D, S, true>(self);
         if closed.promises(tolerance) {
             return closed;
         }
@@ -268,9 +299,9 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
     #[inline(always)]
     fn run(&self, candidate: Candidate) -> Prediction<F> {
         match candidate {
-            Candidate::Map => map::predict(self, crate::map::DEFAULT_MAX_IMPACTS),
+            Candidate::Map => map::predict::<F, D, S, true>(self, crate::map::DEFAULT_MAX_IMPACTS),
             Candidate::Averaged => Averaged::new(self, Nodes::N8).predict(),
-            Candidate::Exact => exact::predict(self, exact::EXACT_MAX_IMPACTS),
+            Candidate::Exact => exact::predict::<F, D, S, true>(self, exact::EXACT_MAX_IMPACTS),
         }
     }
 }

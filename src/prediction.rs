@@ -303,4 +303,13 @@ impl<F: Float> Prediction<F> {
     pub fn bounce_time(&self) -> Option<F> {
         self.end_time.seconds().or(self.last_above_time.seconds())
     }
+
+    /// `self.within_range().bounce_time()`, from the times alone: `within_range` turns a time
+    /// beyond the float's range into `Never` and otherwise changes the last-above time only
+    /// where the end is finite, when `bounce_time` reads the end.
+    #[inline]
+    pub(crate) fn bounce_time_in_range(&self) -> Option<F> {
+        let in_range = |t: Time<F>| t.seconds().filter(|s| s.is_finite() || s.is_nan());
+        in_range(self.end_time).or_else(|| in_range(self.last_above_time))
+    }
 }

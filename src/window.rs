@@ -5,8 +5,10 @@
 //! seconds). Also as `const fn`, so firmware can fix its window at compile time.
 
 use crate::error::{finite, non_negative, positive, Error, Parameter, Reason};
+use crate::mechanisms::Dissipation;
 use crate::prediction::Prediction;
-use crate::Float;
+use crate::scene::OffsetSign;
+use crate::{Float, Method, Scene};
 
 /// How much to add to a predicted bounce time: window = factor * t + extra.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -110,6 +112,34 @@ impl Window {
     ) -> Result<Self, Error> {
         let seconds = prediction
             .bounce_time()
+            .ok_or(Error::new(Parameter::Time, Reason::Endless))?;
+        Self::from_seconds(seconds, margin, sample_period)
+    }
+
+    /// The window covering a scene's bounce time by a method ([`Scene::bounce_time`]): the
+    /// window [`Window::from_prediction`] gives for `scene.predict(method)`, without the
+    /// counts and expected error the prediction would compute and link (the path for firmware
+    /// that wants a window and nothing else).
+    ///
+    /// ```
+    /// use contact_bounce::{catalogue, Margin, Method, Window};
+    /// let dome = catalogue::TACTILE_DOME.scene::<f32>()?;
+    /// let window = Window::from_scene(&dome, Method::Closed, &Margin::new(1.5, 0.0)?, 10e-6)?;
+    /// assert_eq!(window.ticks(), 18); // the closed tier's 115.3 us, +50 %, in 10 us samples
+    /// # Ok::<(), contact_bounce::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`Window::from_prediction`].
+    #[inline]
+    pub fn from_scene<F: Float, D: Dissipation<F>, S: OffsetSign>(
+        scene: &Scene<F, D, S>,
+        method: Method<F>,
+        margin: &Margin<F>,
+        sample_period: F,
+    ) -> Result<Self, Error> {
+        let seconds = scene
+            .bounce_time(method)
             .ok_or(Error::new(Parameter::Time, Reason::Endless))?;
         Self::from_seconds(seconds, margin, sample_period)
     }

@@ -7,8 +7,10 @@
 // counts instructions (QEMU) or cycles (simavr) between the marks, and takes the crate's share
 // of flash as this firmware's text minus `tier_empty`'s (the same skeleton, no crate code).
 
-use contact_bounce::scene::Preload;
-use contact_bounce::{catalogue, Margin, Prediction, Preloaded, Scene, Undamped, Viscous, Window};
+use contact_bounce::scene::{Dissipation, OffsetSign, Preload};
+use contact_bounce::{
+    catalogue, Margin, Method, Prediction, Preloaded, Scene, Undamped, Viscous, Window,
+};
 use core::hint::black_box;
 
 /// The tactile dome's six numbers, rounded to f32 when the firmware is compiled.
@@ -36,6 +38,16 @@ pub extern "C" fn cost_mark(id: u8) {
 #[allow(dead_code)] // not every tier firmware asks a prediction
 pub fn window(prediction: &Prediction<f32>) -> u32 {
     Window::from_prediction(prediction, &Margin::none(), black_box(1e-5)).map_or(0, |w| w.ticks())
+}
+
+/// The window of a scene's bounce time by one method at 10 us samples, no margin (0 where it
+/// has no end): `Window::from_scene`, which links no counts and no expected error.
+#[allow(dead_code)] // not every tier firmware asks for it
+pub fn window_of<D: Dissipation<f32>, S: OffsetSign>(
+    scene: &Scene<f32, D, S>,
+    method: Method<f32>,
+) -> u32 {
+    Window::from_scene(scene, method, &Margin::none(), black_box(1e-5)).map_or(0, |w| w.ticks())
 }
 
 /// The marks around `work`, with no scene (`tier_empty`, and the lean closed form).

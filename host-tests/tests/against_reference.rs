@@ -999,6 +999,86 @@ fn a_scene_typed_by_its_sign_predicts_what_the_run_time_sign_predicts() {
     );
 }
 
+/// The window-only path (`Scene::bounce_time`, `Window::from_scene`: no counts and no expected
+/// error worked out) gives the bounce time of the whole prediction, bit for bit: every tier and
+/// Auto at 10 %, 1 % and 0.1 %; f64 and f32; the grid and 300 scenes off it as `Scene::new`
+/// builds them, typed by their sign, and (damped) typed `Viscous`; the kernel and two-body grids
+/// (f64); each one-body scene also without its threshold (`Scene::new` refuses the endless
+/// ones). Where a time is beyond the float's range both paths give `None` and the same typed
+/// error for the window.
+#[test]
+fn the_window_only_path_gives_the_bounce_time_of_the_prediction() {
+    use contact_bounce::scene::{Dissipation, OffsetSign};
+    use contact_bounce::{Float, Margin, Scene, Window};
+    use host_tests::grid::kernel_grid;
+    fn same<F: Float, D: Dissipation<F>, S: OffsetSign>(
+        name: &str,
+        scene: &Scene<F, D, S>,
+        counts: &mut [usize; 2],
+    ) {
+        let margin = Margin::new(F::from_f64(1.5), F::ZERO).expect("valid margin");
+        let period = F::from_f64(1e-6);
+        for m in every_method::<F>() {
+            let whole = scene.predict(m);
+            let time = scene.bounce_time(m);
+            assert_eq!(
+                time.map(|t| t.to_f64().to_bits()),
+                whole.bounce_time().map(|t| t.to_f64().to_bits()),
+                "{name} {m:?}"
+            );
+            assert_eq!(
+                Window::from_scene(scene, m, &margin, period),
+                Window::from_prediction(&whole, &margin, period),
+                "{name} {m:?}"
+            );
+            counts[usize::from(time.is_none())] += 1;
+        }
+    }
+    fn check<F: Float>(scene: &GridScene, counts: &mut [usize; 2]) {
+        let Ok(chosen) = scene.core_in::<F>() else {
+            return;
+        };
+        same(&scene.name, &chosen, counts);
+        let contact = scene.contact::<F>();
+        let zeta = Viscous::optional(F::from_f64(scene.reference.zeta)).expect("valid zeta");
+        if let Ok(typed) = Scene::new_preload(contact, zeta) {
+            same(&scene.name, &typed, counts);
+        }
+        if let Ok(typed) = Scene::new_gap(contact, zeta) {
+            same(&scene.name, &typed, counts);
+        }
+        if let Some(Ok(damped)) = scene.core_damped::<F>() {
+            same(&scene.name, &damped, counts);
+        }
+        // Without its threshold.
+        let open = contact_bounce::Contact {
+            threshold: contact_bounce::Threshold::None,
+            ..contact
+        };
+        if let Ok(unbounded) = Scene::new(open, zeta) {
+            same(&scene.name, &unbounded, counts);
+        }
+    }
+    use contact_bounce::Viscous;
+    let mut counts = [0; 2];
+    for scene in grid().iter().chain(&off_grid(300, 11)) {
+        check::<f64>(scene, &mut counts);
+        check::<f32>(scene, &mut counts);
+    }
+    for scene in kernel_grid() {
+        if let Ok(core) = scene.core() {
+            same(&scene.name, &core, &mut counts);
+        }
+    }
+    for scene in two_body_grid() {
+        if let Ok(core) = scene.core() {
+            same(&scene.name, &core, &mut counts);
+        }
+    }
+    eprintln!("window-only path: {counts:?} (bounce times, none)");
+    assert!(counts[0] > 20_000, "{counts:?}");
+}
+
 /// A preload force is always a preload: `Scene::new_gap` refuses it, naming the force.
 #[test]
 fn a_preload_force_is_not_a_gap() {

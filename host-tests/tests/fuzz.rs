@@ -370,6 +370,15 @@ fn check_scene<F: Float + std::fmt::Debug, D: contact_bounce::scene::Dissipation
         if let Some(why) = fault(&p) {
             faults.push(format!("{why}: {method:?}, {what}: {p:?}"));
         }
+        // The window-only path gives the prediction's bounce time, bit for bit.
+        let time = scene.bounce_time(method);
+        if time.map(F::to_f64).map(f64::to_bits) != p.bounce_time().map(F::to_f64).map(f64::to_bits)
+        {
+            faults.push(format!(
+                "bounce_time {time:?} != predict's {:?}: {method:?}, {what}",
+                p.bounce_time()
+            ));
+        }
     }
 }
 

@@ -787,10 +787,12 @@ impl<F: Float, S: OffsetSign> Flights<F> for Damped<'_, F, S> {
     }
 }
 
-/// The exact tier's prediction, solving at most `max_impacts` flights.
+/// The exact tier's prediction, solving at most `max_impacts` flights. `FULL`: every field
+/// (false: the times alone, see [`Scene::bounce_time`]; the expected error is then `None`, a
+/// placeholder no caller reads, and a gap's last flights are not solved again for it).
 /// (Outlined on AVR, as `solve` is, and for the same reason.)
 #[cfg_attr(target_arch = "avr", inline(never))]
-pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign>(
+pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign, const FULL: bool>(
     scene: &Scene<F, D, S>,
     max_impacts: u32,
 ) -> Prediction<F> {
@@ -800,8 +802,9 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign>(
     let dissipation = scene.dissipation();
     if dissipation.has_kernel() {
         return match kernel::Kernel::new(scene) {
-            Some(flights) => solve(scene, max_impacts, flights),
-            None => Averaged::new(scene, Nodes::N20).predict(),
+            Some(flights) => solve::<F, D, _, S, FULL>(scene, max_impacts, flights),
+            None if FULL => Averaged::new(scene, Nodes::N20).predict(),
+            None => Averaged::new(scene, Nodes::N20).predict_times(),
         };
     }
     if !dissipation.dissipates() || scene.is_grazing() {
@@ -823,7 +826,7 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign>(
         series,
         walk: true,
     };
-    solve(scene, max_impacts, flights)
+    solve::<F, D, _, S, FULL>(scene, max_impacts, flights)
 }
 
 /// Solves at most `max_impacts` flights of `flights`, then the tail, the end or the averaged
@@ -835,7 +838,7 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign>(
 /// the inliner's choice is the smaller one.
 #[allow(clippy::too_many_lines)] // one loop and its hand-over; splitting it would hide the state
 #[cfg_attr(target_arch = "avr", inline(never))]
-fn solve<F: Float, D: Dissipation<F>, M: Flights<F> + Copy, S: OffsetSign>(
+fn solve<F: Float, D: Dissipation<F>, M: Flights<F> + Copy, S: OffsetSign, const FULL: bool>(
     scene: &Scene<F, D, S>,
     max_impacts: u32,
     mut flights: M,
@@ -978,7 +981,7 @@ fn solve<F: Float, D: Dissipation<F>, M: Flights<F> + Copy, S: OffsetSign>(
     // moves by the error of its departure over its small return speed) and the flight that
     // does not return. Both are solved again from departures off by the rounding: a count that
     // changes has no figure, a time that moves adds its shift.
-    if matches!(stop, Stop::Ended) && scene.regime() == Regime::LastImpact {
+    if FULL && matches!(stop, Stop::Ended) && scene.regime() == Regime::LastImpact {
         let (up, down) = (F::ONE + rounding, F::ONE - rounding);
         let mut after = flights;
         if final_departure > F::ZERO
@@ -1003,7 +1006,7 @@ fn solve<F: Float, D: Dissipation<F>, M: Flights<F> + Copy, S: OffsetSign>(
     } else {
         F::ZERO
     };
-    let expected = if grazing || rest_error == F::MAX {
+    let expected = if !FULL || grazing || rest_error == F::MAX {
         None
     } else {
         accuracy::reduced(scene, Some(rounding + share))
