@@ -316,6 +316,20 @@ cb_error cb_predict_exact(const struct cb_switch *sw, struct cb_prediction *out)
 // smallest expected error answers.
 cb_error cb_predict_auto(const struct cb_switch *sw, float tolerance, struct cb_prediction *out);
 
+// The bounce a window must cover (its end, else its last impact above the threshold), s, by
+// the closed forms: what `cb_predict_closed` gives, without the counts and the expected error
+// (a firmware that calls only this links neither). `cb_seconds_to_ticks` makes it a window.
+cb_error cb_bounce_seconds_closed(const struct cb_switch *sw, float *seconds);
+
+// The bounce time by the averaged model, as `cb_bounce_seconds_closed`.
+cb_error cb_bounce_seconds_averaged(const struct cb_switch *sw, float *seconds);
+
+// The bounce time by the map, as `cb_bounce_seconds_closed`.
+cb_error cb_bounce_seconds_map(const struct cb_switch *sw, float *seconds);
+
+// The bounce time by the exact solution, as `cb_bounce_seconds_closed`.
+cb_error cb_bounce_seconds_exact(const struct cb_switch *sw, float *seconds);
+
 // The debounce window covering a prediction's bounce (its end, else its last impact above the
 // threshold) in ticks of `sample_period` seconds: `ceil((margin_factor * bounce +
 // margin_extra) / sample_period)`, at least 1 for a positive bounce. `margin_factor` >= 1,

@@ -453,6 +453,89 @@ pub extern "C" fn cb_predict_auto(
     predict(sw, out, || Ok(Method::Auto(Tolerance::new(tolerance)?)))
 }
 
+/// Validates the switch and writes its bounce time by `method` (`Scene::bounce_time`). Always
+/// inlined: each caller's method is a constant, so it links its tier alone.
+#[allow(clippy::inline_always)]
+#[inline(always)]
+fn bounce_seconds(
+    sw: Option<&cb_switch>,
+    seconds: Option<&mut f32>,
+    method: Method<f32>,
+) -> cb_error {
+    let (Some(sw), Some(seconds)) = (sw, seconds) else {
+        return NULL;
+    };
+    // (A match, not a closure: one closure type would be shared by every caller, and its one
+    // instance would take the method at run time and link every tier.)
+    let time = match scene(sw) {
+        Ok(s) => s
+            .bounce_time(method)
+            .ok_or(Error::new(Parameter::Time, Reason::Endless)),
+        Err(e) => Err(e),
+    };
+    match time {
+        Ok(t) => {
+            *seconds = t;
+            OK
+        }
+        Err(e) => e.into(),
+    }
+}
+
+/// The bounce a window must cover (its end, else its last impact above the threshold), s, by
+/// the closed forms: what `cb_predict_closed` gives, without the counts and the expected error
+/// (a firmware that calls only this links neither). `cb_seconds_to_ticks` makes it a window.
+#[allow(unsafe_code)]
+#[no_mangle]
+pub extern "C" fn cb_bounce_seconds_closed(
+    sw: Option<&cb_switch>,
+    seconds: Option<&mut f32>,
+) -> cb_error {
+    bounce_seconds(sw, seconds, Method::Closed)
+}
+
+/// The bounce time by the averaged model, as `cb_bounce_seconds_closed`.
+#[allow(unsafe_code)]
+#[no_mangle]
+pub extern "C" fn cb_bounce_seconds_averaged(
+    sw: Option<&cb_switch>,
+    seconds: Option<&mut f32>,
+) -> cb_error {
+    bounce_seconds(sw, seconds, Method::Averaged(Nodes::N8))
+}
+
+/// The bounce time by the map, as `cb_bounce_seconds_closed`.
+#[allow(unsafe_code)]
+#[no_mangle]
+pub extern "C" fn cb_bounce_seconds_map(
+    sw: Option<&cb_switch>,
+    seconds: Option<&mut f32>,
+) -> cb_error {
+    bounce_seconds(
+        sw,
+        seconds,
+        Method::Map {
+            max_impacts: DEFAULT_MAX_IMPACTS,
+        },
+    )
+}
+
+/// The bounce time by the exact solution, as `cb_bounce_seconds_closed`.
+#[allow(unsafe_code)]
+#[no_mangle]
+pub extern "C" fn cb_bounce_seconds_exact(
+    sw: Option<&cb_switch>,
+    seconds: Option<&mut f32>,
+) -> cb_error {
+    bounce_seconds(
+        sw,
+        seconds,
+        Method::Exact {
+            max_impacts: EXACT_MAX_IMPACTS,
+        },
+    )
+}
+
 /// Writes `ceil((margin_factor * seconds + margin_extra) / sample_period)` to `ticks`.
 fn ticks_for(
     seconds: Option<f32>,

@@ -6,9 +6,10 @@
 //! 10,000; `scripts/fuzz.sh`: millions).
 
 use contact_bounce_c::{
-    cb_code, cb_error, cb_estimate, cb_parameter, cb_parameter_name, cb_pin, cb_pin_init,
-    cb_pin_is_closed, cb_pin_update, cb_predict_auto, cb_predict_averaged, cb_predict_closed,
-    cb_predict_exact, cb_predict_map, cb_prediction, cb_preload_bounce_seconds,
+    cb_bounce_seconds_averaged, cb_bounce_seconds_closed, cb_bounce_seconds_exact,
+    cb_bounce_seconds_map, cb_code, cb_error, cb_estimate, cb_parameter, cb_parameter_name, cb_pin,
+    cb_pin_init, cb_pin_is_closed, cb_pin_update, cb_predict_auto, cb_predict_averaged,
+    cb_predict_closed, cb_predict_exact, cb_predict_map, cb_prediction, cb_preload_bounce_seconds,
     cb_preload_bounce_time, cb_preload_restitution_seconds, cb_seconds_to_ticks, cb_switch,
     cb_switch_check, cb_window_ticks, cb_windows, cb_windows_init, CB_HAS_COUNT, CB_HAS_END,
     CB_HAS_EXPECTED_ERROR, CB_HAS_LAST_ABOVE,
@@ -175,6 +176,38 @@ fn raw_inputs_to_the_c_api_get_error_codes_or_sound_answers() {
             // tolerance).
             if tier != "auto" && (e.code() == 0) != (check.code() == 0) {
                 faults.push(format!("{tier} and cb_switch_check disagree: {sw:?}"));
+            }
+            // The window-only path: the prediction's bounce time, bit for bit, or its error
+            // (Endless where the prediction has no time).
+            let seconds_fn: Option<
+                extern "C" fn(Option<&cb_switch>, Option<&mut f32>) -> cb_error,
+            > = match tier {
+                "closed" => Some(cb_bounce_seconds_closed),
+                "averaged" => Some(cb_bounce_seconds_averaged),
+                "map" => Some(cb_bounce_seconds_map),
+                "exact" => Some(cb_bounce_seconds_exact),
+                _ => None,
+            };
+            if let Some(seconds_fn) = seconds_fn {
+                let mut seconds = -1.0_f32;
+                let got = seconds_fn(Some(&sw), Some(&mut seconds));
+                let want = if p.flags & CB_HAS_END != 0 {
+                    Some(p.end_time)
+                } else if p.flags & CB_HAS_LAST_ABOVE != 0 {
+                    Some(p.last_above_time)
+                } else {
+                    None
+                };
+                let same = match (e.code(), want) {
+                    (0, Some(t)) => got.code() == 0 && seconds.to_bits() == t.to_bits(),
+                    (0, None) => got.code() == cb_code::CB_ERR_ENDLESS as u8,
+                    _ => got == e,
+                };
+                if !same {
+                    faults.push(format!(
+                        "{tier}: bounce seconds {seconds:?} ({got:?}), prediction {p:?} ({e:?}): {sw:?}"
+                    ));
+                }
             }
             if e.code() == 0 {
                 accepted += 1;

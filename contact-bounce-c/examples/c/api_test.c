@@ -112,12 +112,62 @@ static void bad_inputs(void) {
     }
 }
 
+/* The window-only path (cb_bounce_seconds_*) gives each prediction's bounce time, bit for bit,
+ * or the same error, on every switch and tier; and its bad inputs are error codes. */
+typedef cb_error (*predict_fn)(const cb_switch *, cb_prediction *);
+typedef cb_error (*seconds_fn)(const cb_switch *, float *);
+
+static void bounce_seconds(void) {
+    const predict_fn predict[] = {cb_predict_closed, cb_predict_averaged, cb_predict_map, cb_predict_exact};
+    const seconds_fn seconds[] = {cb_bounce_seconds_closed, cb_bounce_seconds_averaged, cb_bounce_seconds_map,
+                                  cb_bounce_seconds_exact};
+    int compared = 0;
+    for (uint32_t i = 0; i < SWITCH_COUNT; i++) {
+        for (int t = 0; t < 4; t++) {
+            cb_prediction p;
+            float s = -1.0f;
+            cb_error e = predict[t](&SWITCHES[i], &p);
+            cb_error f = seconds[t](&SWITCHES[i], &s);
+            float want = (p.flags & CB_HAS_END) ? p.end_time : p.last_above_time;
+            cb_error want_error = e;
+            if (e == CB_OK && !(p.flags & (CB_HAS_END | CB_HAS_LAST_ABOVE))) {
+                want_error = f; /* endless: the code is checked below */
+                if (CB_ERROR_CODE(f) != CB_ERR_ENDLESS) {
+                    fprintf(stderr, "FAIL switch %u tier %d: endless gives code %u\n", i, t, CB_ERROR_CODE(f));
+                    failures++;
+                }
+            }
+            if (f != want_error || (f == CB_OK && memcmp(&s, &want, sizeof s) != 0)) {
+                fprintf(stderr, "FAIL switch %u tier %d: bounce seconds %g (error %u), prediction %g (error %u)\n",
+                        i, t, (double)s, f, (double)want, want_error);
+                failures++;
+            }
+            compared++;
+        }
+    }
+    const cb_switch dome = {5e-5f, 5000.0f, -2e-4f, 0.7f, 0.03f, 0.5f, 0.0f};
+    cb_switch bad = dome;
+    float s;
+    expect(cb_bounce_seconds_closed(NULL, &s), CB_ERR_NULL, CB_PARAM_POINTER, "NULL switch, bounce seconds");
+    expect(cb_bounce_seconds_map(&dome, NULL), CB_ERR_NULL, CB_PARAM_POINTER, "NULL seconds");
+    bad.mass = NAN;
+    expect(cb_bounce_seconds_exact(&bad, &s), CB_ERR_NAN, CB_PARAM_MASS, "NaN mass, bounce seconds");
+    bad = dome;
+    bad.restitution = 1.5f;
+    expect(cb_bounce_seconds_averaged(&bad, &s), CB_ERR_OUT_OF_RANGE, CB_PARAM_RESTITUTION, "R above 1, bounce seconds");
+    if (compared != 4 * (int)SWITCH_COUNT) {
+        fprintf(stderr, "FAIL %d bounce times compared\n", compared);
+        failures++;
+    }
+}
+
 int main(void) {
     for (uint32_t i = 0; i < SWITCH_COUNT; i++) {
         switch_lines(put, i);
     }
     debouncer_lines(put);
     bad_inputs();
+    bounce_seconds();
     if (failures != 0) {
         fprintf(stderr, "%d checks failed\n", failures);
         return 1;

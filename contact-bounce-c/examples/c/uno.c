@@ -2,7 +2,8 @@
  * restitution-only time, from a preload's inputs) for the switches of switches.h and the
  * debouncer, printed over the UART. (A tier
  * through this API does not fit: built with -DWITH_CLOSED_TIER, scripts/c-api.sh prints how far
- * the closed tier overflows the 32 KB.) scripts/c-api.sh builds it with avr-gcc
+ * the closed tier's time alone, cb_bounce_seconds_closed, overflows the 32 KB: a cb_switch's
+ * offset may be a gap or a preload, so both sides' code is linked.) scripts/c-api.sh builds it with avr-gcc
  * against libcontact_bounce_c.a, runs it in simavr and compares its lines with the Rust core's
  * (examples/lines.rs) on the host. */
 #include <avr/io.h>
@@ -34,8 +35,12 @@ int main(void) {
         tb1v_line(uart_put, i);
         restitution_line(uart_put, i);
 #ifdef WITH_CLOSED_TIER /* scripts/c-api.sh measures this one: it does not fit */
-        cb_prediction p;
-        prediction_line(uart_put, i, "closed", cb_predict_closed(&SWITCHES[i], &p), &p);
+        float seconds = 0.0f;
+        cb_prediction p = {0};
+        cb_error r = cb_bounce_seconds_closed(&SWITCHES[i], &seconds);
+        p.end_time = seconds;
+        p.flags = CB_HAS_END;
+        prediction_line(uart_put, i, "closed", r, &p);
 #endif
     }
     debouncer_lines(uart_put);
