@@ -66,13 +66,9 @@ uno() {
 }
 uno -o "$tmp/uno.elf"
 avr-size "$tmp/uno.elf"
-# The closed tier as well: linked past the flash's end only to measure it.
-uno -DWITH_CLOSED_TIER -Wl,--noinhibit-exec -o "$tmp/closed.elf" 2>/dev/null || true
-read -r text data _ < <(avr-size "$tmp/closed.elf" | tail -1)
-echo "the closed tier's time (cb_bounce_seconds_closed) through the C API on the Uno: $((text + data)) bytes of flash needed (text $text + data $data) of 32768"
 timeout 300 simavr -m atmega328p -f 16000000 "$tmp/uno.elf" > "$tmp/raw" 2>&1 || true
 sed -e 's/\x1b\[[0-9;]*m//g' "$tmp/raw" | grep -v -e '^Loaded ' -e '^$' | sed -e 's/\.$//' > "$tmp/uno"
-{ grep -E ' tb1v | restitution-averaged |^pin ' "$tmp/rust"; echo done; } > "$tmp/want"
+{ grep -E ' tb1v | restitution-averaged | closed-preload |^pin ' "$tmp/rust"; echo done; } > "$tmp/want"
 if ! diff -u "$tmp/want" "$tmp/uno"; then
   echo "FAIL: the C API on the Uno printed other lines than the host" >&2
   exit 1

@@ -5,8 +5,8 @@
 use contact_bounce::{
     tiers::preload_restitution_bounce_seconds, tiers::preload_viscous_bounce_time,
     tiers::DEFAULT_MAX_IMPACTS, tiers::EXACT_MAX_IMPACTS, Contact, Edge, Error, Frequency, Margin,
-    Method, Mode, Nodes, Offset, Prediction, Restitution, Scene, State, Threshold, Tolerance,
-    Viscous, Window, Windows,
+    Method, Mode, Nodes, Offset, Parameter, Prediction, Reason, Restitution, Scene, State,
+    Threshold, Tolerance, Viscous, Window, Windows,
 };
 
 /// mass, stiffness, offset, R, zeta, closing speed, threshold fraction (0: none).
@@ -18,22 +18,24 @@ const SWITCHES: [[f32; 7]; 3] = [
 
 const SAMPLES: [u8; 20] = [0, 1, 0, 1, 1, 0, 1, 1, 1, 1, 1, 1, 0, 1, 0, 0, 0, 0, 0, 0];
 
-fn scene(s: [f32; 7]) -> Result<Scene<f32, Option<Viscous<f32>>>, Error> {
+fn contact(s: [f32; 7]) -> Result<(Contact<f32>, Option<Viscous<f32>>), Error> {
     let [mass, stiffness, offset, r, zeta, v0, fraction] = s;
-    Scene::new(
-        Contact {
-            frequency: Frequency::MassStiffness { mass, stiffness },
-            offset: Offset::Delta(offset),
-            restitution: Restitution::Coefficient(r),
-            closing_speed: v0,
-            threshold: if fraction == 0.0 {
-                Threshold::None
-            } else {
-                Threshold::FractionOfFirst(fraction)
-            },
+    let contact = Contact {
+        frequency: Frequency::MassStiffness { mass, stiffness },
+        offset: Offset::Delta(offset),
+        restitution: Restitution::Coefficient(r),
+        closing_speed: v0,
+        threshold: if fraction == 0.0 {
+            Threshold::None
+        } else {
+            Threshold::FractionOfFirst(fraction)
         },
-        Viscous::optional(zeta)?,
-    )
+    };
+    Ok((contact, Viscous::optional(zeta)?))
+}
+
+fn scene(s: [f32; 7]) -> Result<Scene<f32, Option<Viscous<f32>>>, Error> {
+    contact(s).and_then(|(contact, damping)| Scene::new(contact, damping))
 }
 
 /// The C API's `cb_code` of an error's reason.
@@ -76,6 +78,30 @@ fn main() -> Result<(), Error> {
             }
             Err(e) => println!(
                 "switch {i} restitution-averaged error {} {}",
+                e.parameter(),
+                code(e)
+            ),
+        }
+        // The closed tier's time on a preloaded switch (`cb_preload_seconds_closed`).
+        let closed_preload = contact(s).and_then(|(contact, damping)| {
+            let time = Scene::new_preload(contact, damping)?.bounce_time(Method::Closed);
+            time.ok_or(Error::new(Parameter::Time, Reason::Endless))
+        });
+        match closed_preload {
+            Ok(t) => {
+                #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+                let end_ns = (t * 1e9_f32) as u32;
+                let ticks = Margin::new(1.5_f32, 0.0)
+                    .and_then(|m| Window::from_seconds(t, &m, 1e-5))
+                    .map_or(0, |w| w.ticks());
+                println!("switch {i} closed-preload end_ns {end_ns} ticks {ticks}");
+            }
+            // The C API names Delta by its field, `offset`.
+            Err(e) if e.parameter() == Parameter::Delta => {
+                println!("switch {i} closed-preload error offset {}", code(e));
+            }
+            Err(e) => println!(
+                "switch {i} closed-preload error {} {}",
                 e.parameter(),
                 code(e)
             ),

@@ -330,6 +330,21 @@ cb_error cb_bounce_seconds_map(const struct cb_switch *sw, float *seconds);
 // The bounce time by the exact solution, as `cb_bounce_seconds_closed`.
 cb_error cb_bounce_seconds_exact(const struct cb_switch *sw, float *seconds);
 
+// The bounce time of a preloaded switch (`offset` < 0) by the closed forms: as
+// `cb_bounce_seconds_closed`, but a gap or an offset of 0 is `CB_PARAM_OFFSET` /
+// `CB_ERR_OUT_OF_RANGE`, and no gap's code is linked (on the Uno a tier through this API fits
+// only this way).
+cb_error cb_preload_seconds_closed(const struct cb_switch *sw, float *seconds);
+
+// The bounce time of a preloaded switch by the averaged model, as `cb_preload_seconds_closed`.
+cb_error cb_preload_seconds_averaged(const struct cb_switch *sw, float *seconds);
+
+// The bounce time of a preloaded switch by the map, as `cb_preload_seconds_closed`.
+cb_error cb_preload_seconds_map(const struct cb_switch *sw, float *seconds);
+
+// The bounce time of a preloaded switch by the exact solution, as `cb_preload_seconds_closed`.
+cb_error cb_preload_seconds_exact(const struct cb_switch *sw, float *seconds);
+
 // The debounce window covering a prediction's bounce (its end, else its last impact above the
 // threshold) in ticks of `sample_period` seconds: `ceil((margin_factor * bounce +
 // margin_extra) / sample_period)`, at least 1 for a positive bounce. `margin_factor` >= 1,

@@ -23,11 +23,15 @@
 #![allow(non_camel_case_types)]
 
 use contact_bounce::{
-    scene::Regime, tiers::preload_restitution_bounce_seconds,
-    tiers::preload_viscous_bounce_seconds, tiers::preload_viscous_bounce_time, tiers::Tier,
-    tiers::DEFAULT_MAX_IMPACTS, tiers::EXACT_MAX_IMPACTS, Contact, Edge, Error, Frequency, Margin,
-    Method, Mode, Nodes, Offset, Parameter, Prediction, Reason, Restitution, Scene, State,
-    Threshold, Tolerance, Viscous, Window, Windows,
+    scene::{AnySign, OffsetSign, Preload, Regime},
+    tiers::preload_restitution_bounce_seconds,
+    tiers::preload_viscous_bounce_seconds,
+    tiers::preload_viscous_bounce_time,
+    tiers::Tier,
+    tiers::DEFAULT_MAX_IMPACTS,
+    tiers::EXACT_MAX_IMPACTS,
+    Contact, Edge, Error, Frequency, Margin, Method, Mode, Nodes, Offset, Parameter, Prediction,
+    Reason, Restitution, Scene, State, Threshold, Tolerance, Viscous, Window, Windows,
 };
 
 /// A panic cannot happen (the core and this crate have no panicking path); on a bare-metal
@@ -235,26 +239,38 @@ pub extern "C" fn cb_parameter_name(parameter: u8) -> *const core::ffi::c_char {
         .as_ptr()
 }
 
-/// The switch as the core's scene, validated.
-fn scene(switch: &cb_switch) -> Result<Scene<f32, Option<Viscous<f32>>>, Error> {
+/// The switch as the core's contact and damping (the damping ratio checked).
+fn parts(switch: &cb_switch) -> Result<(Contact<f32>, Option<Viscous<f32>>), Error> {
     let threshold = if switch.threshold_fraction == 0.0 {
         Threshold::None
     } else {
         Threshold::FractionOfFirst(switch.threshold_fraction)
     };
-    Scene::new(
-        Contact {
-            frequency: Frequency::MassStiffness {
-                mass: switch.mass,
-                stiffness: switch.stiffness,
-            },
-            offset: Offset::Delta(switch.offset),
-            restitution: Restitution::Coefficient(switch.restitution),
-            closing_speed: switch.closing_speed,
-            threshold,
+    let contact = Contact {
+        frequency: Frequency::MassStiffness {
+            mass: switch.mass,
+            stiffness: switch.stiffness,
         },
-        Viscous::optional(switch.damping_ratio)?,
-    )
+        offset: Offset::Delta(switch.offset),
+        restitution: Restitution::Coefficient(switch.restitution),
+        closing_speed: switch.closing_speed,
+        threshold,
+    };
+    Ok((contact, Viscous::optional(switch.damping_ratio)?))
+}
+
+/// A `cb_switch` as the core's scene, its sign of offset typed by `S`.
+type SwitchScene<S = AnySign> = Scene<f32, Option<Viscous<f32>>, S>;
+
+/// The switch as the core's scene, validated.
+fn scene(switch: &cb_switch) -> Result<SwitchScene, Error> {
+    parts(switch).and_then(|(contact, damping)| Scene::new(contact, damping))
+}
+
+/// The switch as a preloaded scene (`Scene::new_preload`: a gap or offset 0 is refused, naming
+/// the offset), validated.
+fn preload_scene(switch: &cb_switch) -> Result<SwitchScene<Preload>, Error> {
+    parts(switch).and_then(|(contact, damping)| Scene::new_preload(contact, damping))
 }
 
 /// Validates a switch: `CB_OK`, or the first invalid parameter and why.
@@ -462,12 +478,35 @@ fn bounce_seconds(
     seconds: Option<&mut f32>,
     method: Method<f32>,
 ) -> cb_error {
+    seconds_of(sw, seconds, method, scene)
+}
+
+/// As `bounce_seconds`, for a preloaded switch (its scene typed `Preload`).
+#[allow(clippy::inline_always)]
+#[inline(always)]
+fn preload_seconds(
+    sw: Option<&cb_switch>,
+    seconds: Option<&mut f32>,
+    method: Method<f32>,
+) -> cb_error {
+    seconds_of(sw, seconds, method, preload_scene)
+}
+
+/// Validates the switch by `build` and writes its bounce time by `method`.
+#[allow(clippy::inline_always)]
+#[inline(always)]
+fn seconds_of<S: OffsetSign>(
+    sw: Option<&cb_switch>,
+    seconds: Option<&mut f32>,
+    method: Method<f32>,
+    build: fn(&cb_switch) -> Result<SwitchScene<S>, Error>,
+) -> cb_error {
     let (Some(sw), Some(seconds)) = (sw, seconds) else {
         return NULL;
     };
     // (A match, not a closure: one closure type would be shared by every caller, and its one
     // instance would take the method at run time and link every tier.)
-    let time = match scene(sw) {
+    let time = match build(sw) {
         Ok(s) => s
             .bounce_time(method)
             .ok_or(Error::new(Parameter::Time, Reason::Endless)),
@@ -528,6 +567,61 @@ pub extern "C" fn cb_bounce_seconds_exact(
     seconds: Option<&mut f32>,
 ) -> cb_error {
     bounce_seconds(
+        sw,
+        seconds,
+        Method::Exact {
+            max_impacts: EXACT_MAX_IMPACTS,
+        },
+    )
+}
+
+/// The bounce time of a preloaded switch (`offset` < 0) by the closed forms: as
+/// `cb_bounce_seconds_closed`, but a gap or an offset of 0 is `CB_PARAM_OFFSET` /
+/// `CB_ERR_OUT_OF_RANGE`, and no gap's code is linked (on the Uno a tier through this API fits
+/// only this way).
+#[allow(unsafe_code)]
+#[no_mangle]
+pub extern "C" fn cb_preload_seconds_closed(
+    sw: Option<&cb_switch>,
+    seconds: Option<&mut f32>,
+) -> cb_error {
+    preload_seconds(sw, seconds, Method::Closed)
+}
+
+/// The bounce time of a preloaded switch by the averaged model, as `cb_preload_seconds_closed`.
+#[allow(unsafe_code)]
+#[no_mangle]
+pub extern "C" fn cb_preload_seconds_averaged(
+    sw: Option<&cb_switch>,
+    seconds: Option<&mut f32>,
+) -> cb_error {
+    preload_seconds(sw, seconds, Method::Averaged(Nodes::N8))
+}
+
+/// The bounce time of a preloaded switch by the map, as `cb_preload_seconds_closed`.
+#[allow(unsafe_code)]
+#[no_mangle]
+pub extern "C" fn cb_preload_seconds_map(
+    sw: Option<&cb_switch>,
+    seconds: Option<&mut f32>,
+) -> cb_error {
+    preload_seconds(
+        sw,
+        seconds,
+        Method::Map {
+            max_impacts: DEFAULT_MAX_IMPACTS,
+        },
+    )
+}
+
+/// The bounce time of a preloaded switch by the exact solution, as `cb_preload_seconds_closed`.
+#[allow(unsafe_code)]
+#[no_mangle]
+pub extern "C" fn cb_preload_seconds_exact(
+    sw: Option<&cb_switch>,
+    seconds: Option<&mut f32>,
+) -> cb_error {
+    preload_seconds(
         sw,
         seconds,
         Method::Exact {

@@ -10,9 +10,10 @@ use contact_bounce_c::{
     cb_bounce_seconds_map, cb_code, cb_error, cb_estimate, cb_parameter, cb_parameter_name, cb_pin,
     cb_pin_init, cb_pin_is_closed, cb_pin_update, cb_predict_auto, cb_predict_averaged,
     cb_predict_closed, cb_predict_exact, cb_predict_map, cb_prediction, cb_preload_bounce_seconds,
-    cb_preload_bounce_time, cb_preload_restitution_seconds, cb_seconds_to_ticks, cb_switch,
-    cb_switch_check, cb_window_ticks, cb_windows, cb_windows_init, CB_HAS_COUNT, CB_HAS_END,
-    CB_HAS_EXPECTED_ERROR, CB_HAS_LAST_ABOVE,
+    cb_preload_bounce_time, cb_preload_restitution_seconds, cb_preload_seconds_averaged,
+    cb_preload_seconds_closed, cb_preload_seconds_exact, cb_preload_seconds_map,
+    cb_seconds_to_ticks, cb_switch, cb_switch_check, cb_window_ticks, cb_windows, cb_windows_init,
+    CB_HAS_COUNT, CB_HAS_END, CB_HAS_EXPECTED_ERROR, CB_HAS_LAST_ABOVE,
 };
 
 struct Rng(u64);
@@ -179,16 +180,15 @@ fn raw_inputs_to_the_c_api_get_error_codes_or_sound_answers() {
             }
             // The window-only path: the prediction's bounce time, bit for bit, or its error
             // (Endless where the prediction has no time).
-            let seconds_fn: Option<
-                extern "C" fn(Option<&cb_switch>, Option<&mut f32>) -> cb_error,
-            > = match tier {
-                "closed" => Some(cb_bounce_seconds_closed),
-                "averaged" => Some(cb_bounce_seconds_averaged),
-                "map" => Some(cb_bounce_seconds_map),
-                "exact" => Some(cb_bounce_seconds_exact),
+            type Seconds = extern "C" fn(Option<&cb_switch>, Option<&mut f32>) -> cb_error;
+            let seconds_fns: Option<(Seconds, Seconds)> = match tier {
+                "closed" => Some((cb_bounce_seconds_closed, cb_preload_seconds_closed)),
+                "averaged" => Some((cb_bounce_seconds_averaged, cb_preload_seconds_averaged)),
+                "map" => Some((cb_bounce_seconds_map, cb_preload_seconds_map)),
+                "exact" => Some((cb_bounce_seconds_exact, cb_preload_seconds_exact)),
                 _ => None,
             };
-            if let Some(seconds_fn) = seconds_fn {
+            if let Some((seconds_fn, preload_fn)) = seconds_fns {
                 let mut seconds = -1.0_f32;
                 let got = seconds_fn(Some(&sw), Some(&mut seconds));
                 let want = if p.flags & CB_HAS_END != 0 {
@@ -206,6 +206,20 @@ fn raw_inputs_to_the_c_api_get_error_codes_or_sound_answers() {
                 if !same {
                     faults.push(format!(
                         "{tier}: bounce seconds {seconds:?} ({got:?}), prediction {p:?} ({e:?}): {sw:?}"
+                    ));
+                }
+                // The preload-typed path: a preload's answer is the same, bit for bit, or the
+                // same error; anything else (a gap, 0, NaN) is refused.
+                let mut typed = -1.0_f32;
+                let preload = preload_fn(Some(&sw), Some(&mut typed));
+                let agrees = if sw.offset < 0.0 {
+                    preload == got && (got.code() != 0 || typed.to_bits() == seconds.to_bits())
+                } else {
+                    preload.code() != 0
+                };
+                if !agrees {
+                    faults.push(format!(
+                        "{tier}: preload seconds {typed:?} ({preload:?}), any sign {seconds:?} ({got:?}): {sw:?}"
                     ));
                 }
             }

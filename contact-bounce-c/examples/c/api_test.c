@@ -121,6 +121,8 @@ static void bounce_seconds(void) {
     const predict_fn predict[] = {cb_predict_closed, cb_predict_averaged, cb_predict_map, cb_predict_exact};
     const seconds_fn seconds[] = {cb_bounce_seconds_closed, cb_bounce_seconds_averaged, cb_bounce_seconds_map,
                                   cb_bounce_seconds_exact};
+    const seconds_fn preload[] = {cb_preload_seconds_closed, cb_preload_seconds_averaged, cb_preload_seconds_map,
+                                  cb_preload_seconds_exact};
     int compared = 0;
     for (uint32_t i = 0; i < SWITCH_COUNT; i++) {
         for (int t = 0; t < 4; t++) {
@@ -142,6 +144,17 @@ static void bounce_seconds(void) {
                         i, t, (double)s, f, (double)want, want_error);
                 failures++;
             }
+            /* A preload's time by its typed scene is the same; a gap is refused, naming the offset. */
+            float q = -1.0f;
+            cb_error g = preload[t](&SWITCHES[i], &q);
+            int same = SWITCHES[i].offset < 0.0f
+                           ? g == f && (f != CB_OK || memcmp(&q, &s, sizeof q) == 0)
+                           : CB_ERROR_CODE(g) == CB_ERR_OUT_OF_RANGE && CB_ERROR_PARAMETER(g) == CB_PARAM_OFFSET;
+            if (!same) {
+                fprintf(stderr, "FAIL switch %u tier %d: preload seconds %g (error %u), any sign %g (error %u)\n", i,
+                        t, (double)q, g, (double)s, f);
+                failures++;
+            }
             compared++;
         }
     }
@@ -155,6 +168,14 @@ static void bounce_seconds(void) {
     bad = dome;
     bad.restitution = 1.5f;
     expect(cb_bounce_seconds_averaged(&bad, &s), CB_ERR_OUT_OF_RANGE, CB_PARAM_RESTITUTION, "R above 1, bounce seconds");
+    expect(cb_preload_seconds_averaged(&bad, &s), CB_ERR_OUT_OF_RANGE, CB_PARAM_RESTITUTION, "R above 1, preload seconds");
+    expect(cb_preload_seconds_closed(NULL, &s), CB_ERR_NULL, CB_PARAM_POINTER, "NULL switch, preload seconds");
+    expect(cb_preload_seconds_exact(&dome, NULL), CB_ERR_NULL, CB_PARAM_POINTER, "NULL preload seconds");
+    bad = dome;
+    bad.offset = 0.0f;
+    expect(cb_preload_seconds_map(&bad, &s), CB_ERR_OUT_OF_RANGE, CB_PARAM_OFFSET, "offset 0, preload seconds");
+    bad.offset = NAN;
+    expect(cb_preload_seconds_closed(&bad, &s), CB_ERR_NAN, CB_PARAM_OFFSET, "NaN offset, preload seconds");
     if (compared != 4 * (int)SWITCH_COUNT) {
         fprintf(stderr, "FAIL %d bounce times compared\n", compared);
         failures++;

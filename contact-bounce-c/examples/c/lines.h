@@ -83,11 +83,26 @@ static inline void restitution_line(put_line put, uint32_t index) {
     prediction_line(put, index, "restitution-averaged", r, &p);
 }
 
+/* The closed tier's time alone on a preloaded switch (its scene typed as a preload: no gap's code
+ * linked): "switch S closed-preload end_ns N ticks K" (or the error: a gap is refused, naming the
+ * offset). */
+static inline void closed_preload_line(put_line put, uint32_t index) {
+    float seconds = 0.0f;
+    cb_error r = cb_preload_seconds_closed(&SWITCHES[index], &seconds);
+    cb_prediction p = {0};
+    if (r == CB_OK) {
+        p.end_time = seconds;
+        p.flags = CB_HAS_END;
+    }
+    prediction_line(put, index, "closed-preload", r, &p);
+}
+
 /* Every tier and the lean paths on one switch of SWITCHES. */
 static inline void switch_lines(put_line put, uint32_t i) {
     cb_prediction p;
     tb1v_line(put, i);
     restitution_line(put, i);
+    closed_preload_line(put, i);
     prediction_line(put, i, "closed", cb_predict_closed(&SWITCHES[i], &p), &p);
     prediction_line(put, i, "averaged", cb_predict_averaged(&SWITCHES[i], &p), &p);
     prediction_line(put, i, "map", cb_predict_map(&SWITCHES[i], &p), &p);
