@@ -73,7 +73,9 @@ so far is kept there as a regression test.
 - **debouncers**: the debouncer and the learning debouncer on random windows and 200 runs of
   random samples each ("checked": both debouncers); an inconsistency is an assertion.
 - **c-api**: raw f32 switches into every function of the C API, and ten times as many random
-  debouncer states and windows.
+  debouncer states and windows; each tier's time alone (\`cb_bounce_seconds_*\`, and
+  \`cb_preload_seconds_*\` on the preloads, which must refuse everything else) is its
+  prediction's, bit for bit, or the same error.
 - **scene-files**, **eval-lines**, **captures**, **options**: the desk tool's parsers, each input
   a valid seed (the example scene file, the catalogue as JSON Lines and as JSON, capture
   fixtures in JSON Lines, CSV and VCD, option lists of every subcommand) mutated one to three
@@ -87,7 +89,8 @@ so far is kept there as a regression test.
 
 "checked" counts the predictions (or calls) checked: no panic, no NaN, infinite or negative
 number, and consistency (the last impact above the threshold not after the end, the impacts
-above not more than all of them, windows covering what they cover). A panic would fail the run
+above not more than all of them, windows covering what they cover, and the window-only path
+\`Scene::bounce_time\` giving each prediction's bounce time bit for bit). A panic would fail the run
 before its line is printed. Every prediction is timed on this machine (release build, one
 test thread): every tier's work is bounded by construction (\`Scene::exact_work\`), and the
 slowest call says what that bound allows in practice. The harnesses run one after the other,
