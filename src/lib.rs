@@ -38,7 +38,9 @@
 //!   straight to a time, with no `Scene`: [`tiers::preload_viscous_bounce_seconds`] (t_b1v) and
 //!   [`tiers::preload_restitution_bounce_seconds`] (the averaged model with restitution alone).
 //! - [`window`]: from a prediction to a [`Window`] in ticks, widened by a [`Margin`]; also as
-//!   `const fn`, so a window can be fixed at compile time.
+//!   `const fn`, so a window can be fixed at compile time. [`Window::from_scene`] (and
+//!   [`Scene::bounce_time`]) take a scene and a method straight to the window: the same one,
+//!   without the counts and expected error a prediction carries, whose code is then not linked.
 //! - [`debounce`]: a [`Debouncer`] on such windows (2 bytes of [`State`] per pin, integer-only),
 //!   and [`learn`]: a [`LearningDebouncer`] that learns its own switch from a prior window.
 //! - [`model`]: the parts of the averaged model (the generating orbit, the averaged equation's
