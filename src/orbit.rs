@@ -40,26 +40,26 @@ pub struct OrbitPoint<F> {
     omega: F,
 }
 
-/// atan2(y, x) for y >= 0 and x >= +0, finite, from `atan` alone: atan(y / x), which is what
-/// libm's `atan2` computes in this quadrant after its checks of signs, zeros, infinities and
-/// exponent gaps; y / x beyond the float's range (x = 0) is pi/2, and 0 / 0 is +0, as `atan2`
-/// gives them. Bit for bit libm's `atan2` (tested over random bits and edges in f32 and f64),
-/// except in f32 where y / x >= 2^26: there `atanf` returns its table's pi/2, one ulp below the
-/// pi/2 `atan2f` returns. The tiers that need no flight of their own (the closed forms, the
-/// averaged model) then link no `atan2` (776 bytes of the Uno's flash), and the host skips its
-/// checks (a third of the map's instructions, where its impacts call this once each).
+/// The phase atan2(y, x) of the orbit for y >= 0 and x = +-0 or positive, finite, from `atan`
+/// alone: atan(y / x), which is what libm's `atan2` computes in this quadrant after its checks
+/// of signs, zeros, infinities and exponent gaps; y / x beyond the float's range (x = 0) is
+/// pi/2, as `atan2` gives it. Bit for bit libm's `atan2` (tested over random bits and edges in
+/// f32 and f64), except:
+/// - in f32 where y / x >= 2^26, where `atanf` returns its table's pi/2, one ulp below the pi/2
+///   `atan2f` returns;
+/// - at y = 0 and x = +-0 (J = 0 at Delta = 0, outside [`Orbit::at`]'s domain), where it is pi/2,
+///   the phase at every J > 0 there, where `atan2` gives 0 or pi.
+///
+/// The tiers that need no flight of their own (the closed forms, the averaged model) then link
+/// no `atan2` (726 bytes of the Uno's averaged tier), and the host skips its checks (a third of
+/// the map's instructions, where its impacts call this once each).
 #[inline]
 pub(crate) fn first_quadrant<F: Float>(y: F, x: F) -> F {
     let ratio = y / x;
-    // A normal ratio, the usual case, by one integer comparison of the bits first: 0.7 % of the
-    // averaged tier's instructions on the Cortex-M4F, for 28 bytes; not on AVR (68 bytes there).
-    let normal = !cfg!(target_arch = "avr") && ratio.within_positive(F::MIN_POSITIVE, F::MAX);
-    if normal || !(ratio.is_nan() || ratio > F::MAX) {
+    if ratio.abs() <= F::MAX {
         ratio.atan()
-    } else if ratio.is_nan() {
-        // 0 / 0.
-        y
     } else {
+        // +-inf, or 0 / 0.
         F::PI * F::HALF
     }
 }
@@ -242,11 +242,25 @@ mod tests {
                 checked += 1;
             }
         }
-        let edges = [0.0, f64::MIN_POSITIVE, 5e-324, 1e-300, 1.0, 1e300, f64::MAX];
-        for y in edges {
+        let edges = [
+            0.0,
+            -0.0,
+            f64::MIN_POSITIVE,
+            5e-324,
+            1e-300,
+            1.0,
+            1e300,
+            f64::MAX,
+        ];
+        for y in edges.into_iter().filter(|y| *y > 0.0) {
             for x in edges {
                 assert_eq!(first_quadrant(y, x).to_bits(), libm::atan2(y, x).to_bits());
             }
+            assert_eq!(first_quadrant(0.0, y).to_bits(), 0);
+        }
+        // J = 0 at Delta = 0: the phase of every J > 0 there.
+        for x in [0.0, -0.0] {
+            assert_eq!(first_quadrant(0.0, x), core::f64::consts::FRAC_PI_2);
         }
         assert!(checked > 150_000, "{checked}");
     }
@@ -276,11 +290,24 @@ mod tests {
                 checked += 1;
             }
         }
-        let edges = [0.0, f32::MIN_POSITIVE, 1e-45, 1e-30, 1.0, 1e30, f32::MAX];
-        for y in edges {
+        let edges = [
+            0.0,
+            -0.0,
+            f32::MIN_POSITIVE,
+            1e-45,
+            1e-30,
+            1.0,
+            1e30,
+            f32::MAX,
+        ];
+        for y in edges.into_iter().filter(|y| *y > 0.0) {
             for x in edges {
                 same(y, x);
             }
+            same(0.0, y);
+        }
+        for x in [0.0, -0.0] {
+            assert_eq!(first_quadrant(0.0_f32, x), core::f32::consts::FRAC_PI_2);
         }
         assert!(checked > 150_000, "{checked}");
     }
