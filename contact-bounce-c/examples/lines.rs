@@ -52,60 +52,40 @@ fn line(index: usize, tier: &str, p: &Prediction<f32>) -> String {
     format!("switch {index} {tier} end_ns {end_ns} ticks {ticks}")
 }
 
+/// A time alone as a line, "switch S TIER end_ns N ticks K", or its error, "switch S TIER error
+/// PARAMETER CODE" (the C API numbers the reason; it names the parameters as the core does, but
+/// Delta by its field, `offset`).
+fn time_line(index: usize, tier: &str, time: Result<f32, Error>) -> String {
+    match time {
+        Ok(t) => {
+            #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+            let end_ns = (t * 1e9_f32) as u32;
+            let ticks = Margin::new(1.5_f32, 0.0)
+                .and_then(|m| Window::from_seconds(t, &m, 1e-5))
+                .map_or(0, |w| w.ticks());
+            format!("switch {index} {tier} end_ns {end_ns} ticks {ticks}")
+        }
+        Err(e) if e.parameter() == Parameter::Delta => {
+            format!("switch {index} {tier} error offset {}", code(e))
+        }
+        Err(e) => format!("switch {index} {tier} error {} {}", e.parameter(), code(e)),
+    }
+}
+
 fn main() -> Result<(), Error> {
     for (i, s) in SWITCHES.into_iter().enumerate() {
         let [mass, stiffness, offset, r, zeta, v0, _] = s;
-        match preload_viscous_bounce_time(mass, stiffness, -offset * stiffness, v0, r, zeta) {
-            Ok(e) => {
-                #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
-                let end_ns = (e.time * 1e9_f32) as u32;
-                let ticks = Margin::new(1.5_f32, 0.0)
-                    .and_then(|m| Window::from_seconds(e.time, &m, 1e-5))
-                    .map_or(0, |w| w.ticks());
-                println!("switch {i} tb1v end_ns {end_ns} ticks {ticks}");
-            }
-            // The C API numbers the parameter and the reason; the names are the same.
-            Err(e) => println!("switch {i} tb1v error {} {}", e.parameter(), code(e)),
-        }
-        match preload_restitution_bounce_seconds(mass, stiffness, -offset * stiffness, v0, r) {
-            Ok(t) => {
-                #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
-                let end_ns = (t * 1e9_f32) as u32;
-                let ticks = Margin::new(1.5_f32, 0.0)
-                    .and_then(|m| Window::from_seconds(t, &m, 1e-5))
-                    .map_or(0, |w| w.ticks());
-                println!("switch {i} restitution-averaged end_ns {end_ns} ticks {ticks}");
-            }
-            Err(e) => println!(
-                "switch {i} restitution-averaged error {} {}",
-                e.parameter(),
-                code(e)
-            ),
-        }
+        let force = -offset * stiffness;
+        let tb1v = preload_viscous_bounce_time(mass, stiffness, force, v0, r, zeta).map(|e| e.time);
+        println!("{}", time_line(i, "tb1v", tb1v));
+        let averaged = preload_restitution_bounce_seconds(mass, stiffness, force, v0, r);
+        println!("{}", time_line(i, "restitution-averaged", averaged));
         // The closed tier's time on a preloaded switch (`cb_preload_seconds_closed`).
         let closed_preload = contact(s).and_then(|(contact, damping)| {
             let time = Scene::new_preload(contact, damping)?.bounce_time(Method::Closed);
             time.ok_or(Error::new(Parameter::Time, Reason::Endless))
         });
-        match closed_preload {
-            Ok(t) => {
-                #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
-                let end_ns = (t * 1e9_f32) as u32;
-                let ticks = Margin::new(1.5_f32, 0.0)
-                    .and_then(|m| Window::from_seconds(t, &m, 1e-5))
-                    .map_or(0, |w| w.ticks());
-                println!("switch {i} closed-preload end_ns {end_ns} ticks {ticks}");
-            }
-            // The C API names Delta by its field, `offset`.
-            Err(e) if e.parameter() == Parameter::Delta => {
-                println!("switch {i} closed-preload error offset {}", code(e));
-            }
-            Err(e) => println!(
-                "switch {i} closed-preload error {} {}",
-                e.parameter(),
-                code(e)
-            ),
-        }
+        println!("{}", time_line(i, "closed-preload", closed_preload));
         let scene = scene(s)?;
         for (tier, method) in [
             ("closed", Method::Closed),
