@@ -54,7 +54,7 @@ pub struct OrbitPoint<F> {
 /// no `atan2` (726 bytes of the Uno's averaged tier), and the host skips its checks (a third of
 /// the map's instructions, where its impacts call this once each).
 #[inline]
-pub(crate) fn first_quadrant<F: Float>(y: F, x: F) -> F {
+fn first_quadrant<F: Float>(y: F, x: F) -> F {
     let ratio = y / x;
     if ratio.abs() <= F::MAX {
         ratio.atan()
