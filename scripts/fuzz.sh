@@ -4,6 +4,9 @@
 #    across the accepted domain, each alone, with a kernel and as two bodies (the damped ones
 #    also typed by their sign), in f32 and f64,
 #    through every tier, MapImpacts, the closed forms, the envelope and the laws of motion;
+#  - monotonicity: the same one-body scenes on a preload or at Delta = 0, each beside its
+#    copy with a 10 % faster closing and its copy with 10 % less restitution, through every
+#    tier: no pair of predictions may contradict the law within their expected errors;
 #  - raw-bits: FUZZ_RAW draws per float (default 3,000,000; four inputs each) of raw bit
 #    patterns and edge values into every public constructor and const fn, accepted scenes
 #    through the same checks;
@@ -13,7 +16,8 @@
 #  - parsers (bounce-table/tests/fuzz.rs): FUZZ_PARSERS mutated scene files, eval lines and
 #    captures (default 100,000 each), and ten times as many option lists for every subcommand.
 # FUZZ_SEED (default 0: the streams CI runs) moves every harness to new streams, so a long run
-# can look where the last one did not.
+# can look where the last one did not. FUZZ_FAULTS=<file> writes every fault of the scene and
+# monotonicity harnesses to that file, one a line.
 # Every prediction is timed and the slowest reported (a measurement: the work is bounded by
 # construction). Prints the counts per harness and class; fails on any fault. `--write` also writes docs/fuzz.md.
 set -euo pipefail
@@ -67,6 +71,12 @@ so far is kept there as a regression test.
   kernel and as two bodies; each damped one also through \`Scene::new_preload\` and
   \`Scene::new_gap\` (accepted exactly on its side, the same predictions); "inputs" counts the
   drawn contacts of both floats.
+- **monotonicity**: each one-body scene of the above on a preload or at Delta = 0 (no kernel)
+  beside its copy with a 10 % faster closing and its copy with 10 % less restitution, the
+  threshold held at the same impulse; "checked" counts the pairs of predictions whose times are
+  of one kind and whose errors are stated. Faster must bounce no shorter and lossier no longer,
+  within the two predictions' expected errors: an "inconsistent" pair contradicts the law.
+  In a gap or with a kernel neither is a law (counterexamples in the harness's docs).
 - **raw-bits**: raw bit patterns and edge values (zeros, subnormals, NaN, infinities, 1e+-30,
   R near 1) into every public constructor and const fn, in f32 and f64; the few scenes accepted
   go through every check. "inputs" counts the values drawn for constructors.
