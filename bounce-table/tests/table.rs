@@ -622,6 +622,34 @@ fn the_output_may_not_be_the_scene_file_itself() {
 }
 
 #[test]
+fn a_window_beyond_the_ticks_a_constant_holds_is_refused_not_written_as_zero() {
+    // The large contactor's window (about 0.1 s) in ticks of 1e-11 s is about 1e10 ticks,
+    // beyond the u32 the generated constants hold: that entry is refused by name, and the
+    // header is not written at all (no other entry's constants, no temporary file).
+    let header = tmp("huge-window.h");
+    let out = run(&[
+        "--period=1e-11",
+        "--format=c",
+        "--output",
+        header.to_str().expect("utf8"),
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("large contactor") && err.contains("period") && err.contains("overflows"),
+        "{err}"
+    );
+    assert!(!header.exists());
+    let dir = header.parent().expect("a directory");
+    let left: Vec<_> = std::fs::read_dir(dir)
+        .expect("list")
+        .filter_map(Result::ok)
+        .filter(|e| e.file_name().to_string_lossy().contains("huge-window"))
+        .collect();
+    assert!(left.is_empty(), "{left:?}");
+}
+
+#[test]
 fn a_very_long_name_is_laid_out_not_a_panic() {
     let long = "x".repeat(100_000);
     let path = named("long.json", &[long.as_str()]);
