@@ -41,13 +41,14 @@ for line in open(sys.argv[1]):
     m = re.search(r"fuzz-summary (.*)", line)
     if m:
         rows.append(dict(kv.split("=", 1) for kv in m.group(1).split()))
-print("| harness | inputs | checked | panics | NaN or infinite | inconsistent | slowest prediction so far |")
-print("|---|---:|---:|---:|---:|---:|---:|")
+print("| harness | inputs | checked | panics | NaN or infinite | over time | inconsistent | slowest prediction so far |")
+print("|---|---:|---:|---:|---:|---:|---:|---:|")
 for r in rows:
     # The debouncers and the parsers time no prediction of their own.
     timed = "slowest_us" in r and r["harness"] != "debouncers"
     slow = f"{float(r['slowest_us']) / 1e3:.1f} ms" if timed else "-"
-    print(f"| {r['harness']} | {int(r['inputs']):,} | {int(r['checked']):,} | 0 | {r['nan']} | {r['inconsistent']} | {slow} |")
+    over = r["over_time"] if timed else "-"
+    print(f"| {r['harness']} | {int(r['inputs']):,} | {int(r['checked']):,} | 0 | {r['nan']} | {over} | {r['inconsistent']} | {slow} |")
 slowest = [l.split("fuzz-slowest ", 1)[1].strip() for l in open(sys.argv[1]) if "fuzz-slowest " in l]
 if slowest:
     print()
@@ -103,7 +104,9 @@ above not more than all of them, windows covering what they cover, and the windo
 \`Scene::bounce_time\` giving each prediction's bounce time bit for bit). A panic would fail the run
 before its line is printed. Every prediction is timed on this machine (release build, one
 test thread): every tier's work is bounded by construction (\`Scene::exact_work\`), and the
-slowest call says what that bound allows in practice. The harnesses run one after the other,
+slowest call says what that bound allows in practice. A call over 2 s is a fault ("over time":
+a hang detector with five times the slowest call measured so far, not a speed test); the
+debouncers and the parsers time no prediction ("-"). The harnesses run one after the other,
 so each row's "slowest" is the slowest of the run so far.
 
 $table

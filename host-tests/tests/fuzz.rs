@@ -66,6 +66,12 @@ fn raw_scenes() -> usize {
 /// the bounds allow (a timing is a measurement here, never a pass/fail test).
 static SLOWEST: std::sync::Mutex<(u128, String)> = std::sync::Mutex::new((0, String::new()));
 
+/// A prediction slower than this is a fault ("over time"): a hang detector, not a speed test.
+/// Every tier's work is bounded by construction (`Scene::exact_work`); the slowest call of the
+/// long run in `docs/fuzz.md` took 0.4 s on a 2-core x86-64 host, so 2 s leaves a factor of
+/// five for a slower or busier machine.
+const OVER_TIME: std::time::Duration = std::time::Duration::from_secs(2);
+
 /// The class of a fault, for the report: an inconsistency (an order or a bound between two
 /// results broken: the checks whose messages name one), else a NaN, infinite or negative number
 /// (every other check). By the check's own message, not by the values it prints.
@@ -77,7 +83,9 @@ fn class(fault: &str) -> &'static str {
         ") = 0",
         "not monotone",
     ];
-    if inconsistent.iter().any(|m| fault.contains(m)) {
+    if fault.starts_with("over time") {
+        "over time"
+    } else if inconsistent.iter().any(|m| fault.contains(m)) {
         "inconsistent"
     } else {
         "NaN or infinite"
@@ -92,8 +100,9 @@ fn summary(harness: &str, inputs: usize, checked: usize, faults: &[String]) {
     #[allow(clippy::cast_precision_loss)]
     let us = ns as f64 / 1e3;
     eprintln!(
-        "fuzz-summary harness={harness} inputs={inputs} checked={checked} nan={} inconsistent={} slowest_us={us:.1}",
+        "fuzz-summary harness={harness} inputs={inputs} checked={checked} nan={} over_time={} inconsistent={} slowest_us={us:.1}",
         count("NaN or infinite"),
+        count("over time"),
         count("inconsistent"),
     );
     eprintln!("fuzz-slowest {what}");
@@ -473,7 +482,15 @@ fn check_scene<F: Float + std::fmt::Debug, D: contact_bounce::scene::Dissipation
     for method in methods::<F>() {
         let start = std::time::Instant::now();
         let p = scene.predict(method);
-        let took = start.elapsed().as_nanos();
+        let elapsed = start.elapsed();
+        if elapsed > OVER_TIME {
+            faults.push(format!(
+                "over time: {:.0} ms, {method:?} ({}), {what}",
+                elapsed.as_secs_f64() * 1e3,
+                std::any::type_name::<F>()
+            ));
+        }
+        let took = elapsed.as_nanos();
         if let Ok(mut slowest) = SLOWEST.lock() {
             if took > slowest.0 {
                 *slowest = (
