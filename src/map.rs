@@ -312,8 +312,8 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign, const FULL: bo
         impacts = MapImpacts::resume(scene, impact.index, impact.time, speed, max_impacts);
     }
     let Tally {
-        mut last_above,
-        mut above,
+        last_above,
+        above,
         still_above,
         below_in_endless,
         latest,
@@ -351,6 +351,7 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign, const FULL: bo
     };
 
     let mut approximations = Approximations::NONE;
+    let mut rest_above = None;
     let (end_time, impacts_total) = match stop {
         Stop::Ended(t, n) => (Time::At(t), Count::Finite(n)),
         Stop::BelowThreshold => (Time::Never, Count::Infinite),
@@ -374,13 +375,23 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign, const FULL: bo
                     }
                 }
             };
-            // The rest of the threshold count, if the threshold was not crossed yet.
+            // The rest of the threshold count, if the threshold was not crossed yet: every
+            // outcome taken (one left out kept the last impact solved as the last above).
             if still_above {
                 if let Some(j_end) = scene.threshold_generating() {
-                    if let (Time::At(dt), Count::Finite(dn)) = rest(j_end) {
-                        last_above = t + dt;
-                        above = n + dn;
-                    }
+                    let (dt, dn) = rest(j_end);
+                    rest_above = Some((
+                        match dt {
+                            Time::At(dt) => Time::At(t + dt),
+                            // Beyond what the float can tell: out of range (flagged below).
+                            Time::Never => Time::At(F::MAX * F::TWO),
+                        },
+                        match dn {
+                            Count::Finite(dn) => Count::Finite(n + dn),
+                            // More than the float counts: out of range (flagged by the caller).
+                            Count::Infinite => Count::Finite(F::MAX * F::TWO),
+                        },
+                    ));
                 }
             }
             if endless {
@@ -396,7 +407,7 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign, const FULL: bo
         }
     };
     let (last_above_time, impacts_above) = if threshold.is_some() {
-        (Time::At(last_above), Count::Finite(above))
+        rest_above.unwrap_or((Time::At(last_above), Count::Finite(above)))
     } else {
         (end_time, impacts_total)
     };

@@ -11,9 +11,10 @@
 //! number of scenes per float (CI: the default, 10,000; `scripts/fuzz.sh`: 20,000).
 
 use contact_bounce::{
-    scene::TwoBody, tiers::Averaged, tiers::Bodies, tiers::Count, tiers::MapImpacts, tiers::Time,
-    Contact, Float, Frequency, Hereditary, LearningState, Method, Mode, Nodes, Offset, Prediction,
-    Restitution, Scene, State, Threshold, Tolerance, Viscous, Windows,
+    scene::TwoBody, tiers::Approximations, tiers::Averaged, tiers::Bodies, tiers::Count,
+    tiers::MapImpacts, tiers::Time, Contact, Float, Frequency, Hereditary, LearningState, Method,
+    Mode, Nodes, Offset, Prediction, Restitution, Scene, State, Threshold, Tolerance, Viscous,
+    Windows,
 };
 
 struct Rng(u64);
@@ -192,18 +193,14 @@ fn predictions<F: Float + std::fmt::Debug>(rng: &mut Rng, n: usize) -> Found {
             };
             if let Ok(scene) = Scene::new(contact, viscous) {
                 check_scene(&scene, &what, &mut checked, &mut faults);
-                pairs += monotone(contact, viscous, &scene, &what, &mut broken);
+                let changed = laws(contact, viscous, &scene, true);
+                pairs += monotone(&scene, &changed, &what, &mut broken);
             }
             checked += typed_by_sign(contact, viscous, &what, &mut faults);
         } else if let Ok(scene) = Scene::new(contact, contact_bounce::Undamped) {
             check_scene(&scene, &what, &mut checked, &mut faults);
-            pairs += monotone(
-                contact,
-                contact_bounce::Undamped,
-                &scene,
-                &what,
-                &mut broken,
-            );
+            let changed = laws(contact, contact_bounce::Undamped, &scene, true);
+            pairs += monotone(&scene, &changed, &what, &mut broken);
         }
         // The same contact with an exponential kernel below the spring's stiffness.
         let tau = rng.log_uniform(1e-3, 1e3) / omega;
@@ -215,6 +212,8 @@ fn predictions<F: Float + std::fmt::Debug>(rng: &mut Rng, n: usize) -> Found {
             if let Ok(scene) = Scene::new(contact, (viscous, kernel)) {
                 let what = format!("{what} kappa {kappa:e} tau {tau:e}");
                 check_scene(&scene, &what, &mut checked, &mut faults);
+                let changed = laws(contact, (viscous, kernel), &scene, false);
+                pairs += monotone(&scene, &changed, &what, &mut broken);
             }
         }
         // Two bodies whose partial frequencies differ by up to 2x each way.
@@ -270,19 +269,24 @@ fn methods<F: Float>() -> [Method<F>; 5] {
 }
 
 /// The physics monotonicities, within the expected error each prediction states (the laws
-/// `physics_properties.rs` asserts on a grid, here on random scenes). On a preload or at
-/// Delta = 0, one body without a kernel, with the threshold held at the same impulse:
-/// - a closing speed 10 % faster bounces no shorter (flights lengthen with the impulse, and
-///   there are more impacts above any threshold);
-/// - a restitution 10 % lower (more loss at each impact) bounces no longer.
+/// `physics_properties.rs` asserts on a grid, here on random scenes), the threshold held at the
+/// same impulse where the law is not about it ([`laws`] builds the changed scenes):
+/// - everywhere, a threshold half as high ends no earlier (the impacts are the same, and more
+///   of them count);
+/// - on a preload or at Delta = 0, one body without a kernel, a closing speed 10 % faster
+///   bounces no shorter (flights lengthen with the impulse, and more impacts are above any
+///   threshold), and a restitution 10 % lower (more loss at each impact) no longer.
 ///
-/// Elsewhere neither is a law, and the exact tier and the host reference agree on
-/// counterexamples this harness found:
+/// Elsewhere the last two are not laws, nor is "more damping bounces shorter"; the exact tier
+/// and the host reference agree on counterexamples this harness found:
 /// - in a gap, flights shorten as the impulse grows, so a slower rebound (more loss, or a
 ///   slower closing) can end later with the same count (omega 4.26e6, Delta 3.15e-9,
 ///   R 0.9999994 -> 0.9, v0 1956, zeta 0.69: 3.0771e-6 -> 3.0831e-6 s);
 /// - with a kernel, the force it remembers changes the later flights (omega 311, Delta 0,
-///   R 0.9999997 -> 0.9, zeta 0.58, kappa 2.3e5, tau 0.0126: 0.012897 -> 0.012942 s).
+///   R 0.9999997 -> 0.9, zeta 0.58, kappa 2.3e5, tau 0.0126: 0.012897 -> 0.012942 s);
+/// - more damping lengthens each flight: overdamped, the contacts creep back more slowly, and
+///   at Delta = 0 the flight is pi / Omega_d while fewer impacts stay above a threshold, a
+///   sawtooth.
 ///
 /// A prediction of relative error e brackets the exact time: t / (1 + e) <= exact <=
 /// t / (1 - e); two predictions contradict the law only where their brackets do. The bounce
@@ -290,41 +294,17 @@ fn methods<F: Float>() -> [Method<F>; 5] {
 /// so only like is compared with like. Returns the pairs compared (both times finite, of the
 /// same kind, both errors stated and below 1).
 fn monotone<F: Float + std::fmt::Debug, D: contact_bounce::scene::Dissipation<F>>(
-    contact: Contact<F>,
-    dissipation: D,
     scene: &Scene<F, D>,
+    laws: &[(&str, Scene<F, D>, bool)],
     what: &str,
     faults: &mut Vec<String>,
 ) -> usize {
-    let base = Contact {
-        threshold: scene
-            .threshold_impulse()
-            .map_or(Threshold::None, Threshold::Impulse),
-        ..contact
-    };
-    let faster = Some(Contact {
-        closing_speed: contact.closing_speed * F::from_f64(1.1),
-        ..base
-    });
-    let lossier = match contact.restitution {
-        Restitution::Coefficient(r) if r > F::ZERO => Some(Contact {
-            restitution: Restitution::Coefficient(r * F::from_f64(0.9)),
-            ..base
-        }),
-        _ => None,
-    };
-    if scene.delta() > F::ZERO {
+    if laws.is_empty() {
         return 0;
     }
     let before = methods::<F>().map(|m| scene.predict(m));
     let mut compared = 0;
-    for (law, changed, longer) in [
-        ("a faster closing", faster, true),
-        ("more loss", lossier, false),
-    ] {
-        let Some(Ok(other)) = changed.map(|c| Scene::new(c, dissipation)) else {
-            continue;
-        };
+    for (law, other, longer) in laws {
         for (method, p) in methods::<F>().into_iter().zip(before) {
             let q = other.predict(method);
             let (Some(t), Some(u), Some(e), Some(f)) = (
@@ -343,7 +323,7 @@ fn monotone<F: Float + std::fmt::Debug, D: contact_bounce::scene::Dissipation<F>
             }
             compared += 1;
             let (t, u, e, f) = (t.to_f64(), u.to_f64(), e.to_f64(), f.to_f64());
-            let broken = if longer {
+            let broken = if *longer {
                 u / (1.0 - f) < t / (1.0 + e)
             } else {
                 u / (1.0 + f) > t / (1.0 - e)
@@ -356,6 +336,57 @@ fn monotone<F: Float + std::fmt::Debug, D: contact_bounce::scene::Dissipation<F>
         }
     }
     compared
+}
+
+/// The changed scenes [`monotone`] compares a one-body scene with: each law's name, its scene
+/// and whether it bounces longer. `plain`: no kernel (the closing-speed and restitution laws
+/// hold on a preload or at Delta = 0 without one); the threshold law holds everywhere.
+fn laws<F: Float, D: contact_bounce::scene::Dissipation<F>>(
+    contact: Contact<F>,
+    dissipation: D,
+    scene: &Scene<F, D>,
+    plain: bool,
+) -> Vec<(&'static str, Scene<F, D>, bool)> {
+    let held = scene.threshold_impulse();
+    let base = Contact {
+        threshold: held.map_or(Threshold::None, Threshold::Impulse),
+        ..contact
+    };
+    let mut changed = Vec::new();
+    if let Some(threshold) = held {
+        changed.push((
+            "a lower threshold",
+            Contact {
+                threshold: Threshold::Impulse(threshold * F::HALF),
+                ..base
+            },
+            true,
+        ));
+    }
+    if plain && scene.delta() <= F::ZERO {
+        changed.push((
+            "a faster closing",
+            Contact {
+                closing_speed: contact.closing_speed * F::from_f64(1.1),
+                ..base
+            },
+            true,
+        ));
+        if let Restitution::Coefficient(r) = contact.restitution {
+            changed.push((
+                "more loss",
+                Contact {
+                    restitution: Restitution::Coefficient(r * F::from_f64(0.9)),
+                    ..base
+                },
+                false,
+            ));
+        }
+    }
+    changed
+        .into_iter()
+        .filter_map(|(law, c, longer)| Scene::new(c, dissipation).ok().map(|s| (law, s, longer)))
+        .collect()
 }
 
 /// The constructors that put the sign of Delta in the type, beside `Scene::new`: each accepts
@@ -895,6 +926,71 @@ fn an_acceleration_scale_beyond_the_float_is_refused() {
     check_scene(&wide, "f64 at 1e30 m/s", &mut checked, &mut faults);
     assert!(checked > 0);
     assert!(faults.is_empty(), "{faults:?}");
+}
+
+#[test]
+fn a_threshold_crossed_past_the_cap_is_not_lost_where_f32_cannot_count_the_impacts() {
+    // Found by the monotonicity harness (f32): a kernel's slow decay (R = 1, zeta = 0), the
+    // threshold crossed long after the 10,000 impacts solved. Where the averaged rest's count
+    // overflowed f32 (about 1e38 impacts), the exact tier and the map kept the last impact
+    // solved as the last above: 160 s with a 1 % figure, where the threshold is crossed at
+    // 6.19e27 s (f64); a threshold twice as high gave 1.55e27 s, later than the lower one.
+    fn last_above<F: Float>(method: Method<F>, halved: bool) -> Prediction<F> {
+        let contact = |threshold| Contact {
+            frequency: Frequency::Omega(F::from_f64(3.343_383_306_083_673e-2)),
+            offset: Offset::Delta(F::from_f64(-1.548_308_656_173_180_5e-2)),
+            restitution: Restitution::Coefficient(F::ONE),
+            closing_speed: F::from_f64(4.786_894_219_913_011e-8),
+            threshold,
+        };
+        let kernel = Hereditary::exponential(
+            F::from_f64(1.102_124_784_919_878_6e-5),
+            F::from_f64(66.403_496_932_745_88),
+        )
+        .unwrap_or_else(|e| panic!("{e}"));
+        let scene = |threshold| Scene::new(contact(threshold), (None::<Viscous<F>>, kernel));
+        let first = scene(Threshold::FractionOfFirst(F::from_f64(1.313_368_1e-8)))
+            .unwrap_or_else(|e| panic!("{e}"));
+        let threshold = first.threshold_impulse().unwrap_or(F::ZERO);
+        let threshold = if halved {
+            threshold * F::HALF
+        } else {
+            threshold
+        };
+        scene(Threshold::Impulse(threshold))
+            .unwrap_or_else(|e| panic!("{e}"))
+            .predict(method)
+    }
+    fn capped<F: Float>(exact: bool) -> Method<F> {
+        let max_impacts = 10_000;
+        if exact {
+            Method::Exact { max_impacts }
+        } else {
+            Method::Map { max_impacts }
+        }
+    }
+    for exact in [true, false] {
+        let method = capped::<f32>(exact);
+        let wide = last_above::<f64>(capped(exact), true);
+        let truth = wide.bounce_time().unwrap_or(0.0);
+        assert!(truth > 6e27, "{method:?} f64: {wide:?}");
+        let high = last_above::<f32>(method, false)
+            .bounce_time()
+            .unwrap_or(f32::MAX);
+        let low = last_above::<f32>(method, true);
+        let time = low.bounce_time().unwrap_or(0.0);
+        assert!(time >= high, "{method:?} f32: {low:?} before {high}");
+        // Within the figure the tier states where it states one (the exact tier: 0.66).
+        let error = (f64::from(time) - truth).abs() / truth;
+        assert!(
+            low.expected_error.is_none_or(|e| error <= f64::from(e)),
+            "{method:?} f32: {low:?}, f64 {truth:e}"
+        );
+        assert!(error < 1e-2, "{method:?} f32: {low:?}, f64 {truth:e}");
+        // Its count of impacts above is more than f32 holds: out of range, and flagged.
+        assert_eq!(low.impacts_above, Count::Infinite, "{method:?}");
+        assert!(low.approximations.contains(Approximations::BEYOND_RANGE));
+    }
 }
 
 #[test]

@@ -945,11 +945,21 @@ fn solve<F: Float, D: Dissipation<F>, M: Flights<F> + Copy, S: OffsetSign, const
             };
             if still_above {
                 if let Some(j_end) = scene.threshold_generating() {
-                    if let (Time::At(dt), Count::Finite(dn), _) = averaged.fall(j, j_end) {
-                        last_above_time = Time::At(elapsed + dt);
-                        impacts_above = Count::Finite(count + dn);
-                        rest_error = figure(dt);
-                    }
+                    // Every outcome of the rest is taken: one left out kept the last impact
+                    // solved as the last above, with no error for the rest (f32, a kernel's
+                    // slow decay: 160 s with a 1 % figure, where the rest takes 6e27 s).
+                    let (dt, dn, _) = averaged.fall(j, j_end);
+                    last_above_time = match dt {
+                        Time::At(dt) => Time::At(elapsed + dt),
+                        // Beyond what the float can tell: out of range (flagged by the caller).
+                        Time::Never => Time::At(F::MAX * F::TWO),
+                    };
+                    impacts_above = match dn {
+                        Count::Finite(dn) => Count::Finite(count + dn),
+                        // More than the float counts: out of range (flagged by the caller).
+                        Count::Infinite => Count::Finite(F::MAX * F::TWO),
+                    };
+                    rest_error = dt.seconds().map_or(F::MAX, figure);
                 }
             }
             if endless {
