@@ -228,20 +228,27 @@ fn predictions<F: Float + std::fmt::Debug>(rng: &mut Rng, n: usize) -> Found {
             c2: F::from_f64(c2),
             d2: F::from_f64(2.0 * zeta * (c2 * m2).sqrt()),
         };
-        if let Ok(scene) = Scene::two_body(
-            bodies,
-            Offset::Delta(F::from_f64(delta)),
-            Restitution::Coefficient(F::from_f64(r)),
-            F::from_f64(v0),
-            threshold,
-            None,
-        ) {
-            check_scene(
-                &scene,
-                &format!("{what} two bodies {bodies:?}"),
-                &mut checked,
-                &mut faults,
-            );
+        let two = |threshold| {
+            Scene::two_body(
+                bodies,
+                Offset::Delta(F::from_f64(delta)),
+                Restitution::Coefficient(F::from_f64(r)),
+                F::from_f64(v0),
+                threshold,
+                None,
+            )
+        };
+        if let Ok(scene) = two(threshold) {
+            let what = format!("{what} two bodies {bodies:?}");
+            check_scene(&scene, &what, &mut checked, &mut faults);
+            // The threshold law holds for two bodies too.
+            let lower = scene
+                .threshold_impulse()
+                .and_then(|t| two(Threshold::Impulse(t * F::HALF)).ok());
+            if let Some(lower) = lower {
+                let changed = [("a lower threshold", lower, true)];
+                pairs += monotone(&scene, &changed, &what, &mut broken);
+            }
         }
     }
     Found {
