@@ -361,14 +361,20 @@ impl<'a, F: Float, D: Dissipation<F>, S: OffsetSign> Averaged<'a, F, D, S> {
         let (end_time, impacts_total, cap_end) = if ends {
             let (t_rest, n_rest, cap) = self.fall(rest_from, F::ZERO);
             match threshold_part {
-                Some((Time::At(t), Count::Finite(n), _)) => (
+                // The rest follows the fall to the threshold: the end is their sum, beyond
+                // what the float tells where either part is (a threshold part that was not a
+                // finite time and count used to be dropped, and the end taken from the
+                // threshold on; no input is known to reach that, but nothing rules it out).
+                Some((Time::At(t), n, _)) => (
                     t_rest.seconds().map_or(Time::Never, |tr| Time::At(t + tr)),
-                    n_rest
-                        .value()
-                        .map_or(Count::Infinite, |nr| Count::Finite(n + nr + F::ONE)),
+                    // (A count beyond the float's range is infinite: flagged by the caller.)
+                    n_rest.value().map_or(Count::Infinite, |nr| {
+                        Count::Finite(n.value().unwrap_or(F::MAX * F::TWO) + nr + F::ONE)
+                    }),
                     cap,
                 ),
-                _ => (
+                Some(_) => (Time::Never, Count::Infinite, cap),
+                None => (
                     t_rest,
                     n_rest
                         .value()
