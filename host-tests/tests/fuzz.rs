@@ -1001,6 +1001,48 @@ fn a_threshold_crossed_past_the_cap_is_not_lost_where_f32_cannot_count_the_impac
 }
 
 #[test]
+fn the_map_walk_ends_where_the_impulse_leaves_the_float_not_in_nan() {
+    // The outside harness's example: `MapImpacts` gave NaN once the impulse underflowed (many
+    // impacts of a small R in a gap or at Delta = 0, where nothing else ends the walk). Each
+    // impact must be a number, in order, and the walk must end before its cap.
+    fn walk<F: Float + std::fmt::Debug>(delta: f64, r: f64, zeta: f64) {
+        let contact = Contact {
+            frequency: Frequency::Omega(F::from_f64(1000.0)),
+            offset: Offset::Delta(F::from_f64(delta)),
+            restitution: Restitution::Coefficient(F::from_f64(r)),
+            closing_speed: F::from_f64(0.5),
+            // (A threshold is required where the bounce never ends; the walk ignores it.)
+            threshold: Threshold::FractionOfFirst(F::from_f64(1e-6)),
+        };
+        let viscous = Viscous::optional(F::from_f64(zeta)).unwrap_or_else(|e| panic!("{e}"));
+        let scene = Scene::new(contact, viscous).unwrap_or_else(|e| panic!("{e}"));
+        let (mut previous, mut count) = (F::ZERO, 0_u32);
+        for impact in MapImpacts::new(&scene, 1_000_000) {
+            assert!(
+                impact.time.is_finite()
+                    && impact.time >= previous
+                    && impact.impulse.is_finite()
+                    && impact.impulse >= F::ZERO,
+                "{impact:?} after {previous:?}: Delta {delta} R {r} zeta {zeta}"
+            );
+            previous = impact.time;
+            count += 1;
+        }
+        assert!(count < 1_000_000, "Delta {delta} R {r} zeta {zeta}: no end");
+    }
+    for (delta, r, zeta) in [
+        (1e-3, 0.01, 0.0),
+        (0.0, 0.01, 0.0),
+        (0.0, 0.5, 0.0),
+        (0.0, 0.01, 0.05),
+        (1e-3, 0.3, 0.0),
+    ] {
+        walk::<f32>(delta, r, zeta);
+        walk::<f64>(delta, r, zeta);
+    }
+}
+
+#[test]
 fn ratios_beyond_f32_are_taken_in_logarithms() {
     // Found by the raw-bits harness at 3,000,000 inputs: f32, a preload (Omega 45 rad/s,
     // |Delta| 1.1e-5 m), r = 3.9e-10, zeta 1, closing at 1e30 m/s. j0 / r overflowed f32: the
