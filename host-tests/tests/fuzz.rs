@@ -5,10 +5,11 @@
 //! and the debouncer and the learner on random samples and windows. Each call is checked for
 //! no panic, no NaN or negative time or count, and consistency (the last impact above the
 //! threshold not after the end, impacts above not more than all), and where physics makes the
-//! bounce monotone in the closing speed and the restitution, that no two predictions
-//! contradict it within their expected errors ([`monotone`]). Each scene is also tried with an
-//! exponential kernel and as two bodies of unequal partial frequencies. `FUZZ_SCENES` sets the
-//! number of scenes per float (CI: the default, 10,000; `scripts/fuzz.sh`: 20,000).
+//! bounce monotone in the threshold, the closing speed or the restitution, that no two
+//! predictions contradict it within their expected errors ([`monotone`]). Each scene is also
+//! tried with an exponential kernel and as two bodies of unequal partial frequencies.
+//! `FUZZ_SCENES` sets the number of scenes per float (CI: the default, 10,000;
+//! `scripts/fuzz.sh`: 20,000).
 
 use contact_bounce::{
     scene::TwoBody, tiers::Approximations, tiers::Averaged, tiers::Bodies, tiers::Count,
