@@ -96,6 +96,60 @@ impl Parameter {
     }
 }
 
+impl Parameter {
+    /// What the model takes for this parameter, in words (the reason's meaning when an
+    /// [`Error`] says [`Reason::OutOfRange`]); `None` where only the other reasons apply.
+    ///
+    /// The figures are those of [`PHYSICAL_RANGE`] and the limits in
+    /// [`scene`](crate::scene) (`SMALLEST_RATE`, `SMALLEST_RESTITUTION`, `LARGEST_DAMPING`).
+    ///
+    /// ```
+    /// use contact_bounce::Parameter;
+    /// assert_eq!(Parameter::ThresholdFraction.accepted(), Some("values in (0, 1)"));
+    /// ```
+    #[must_use]
+    pub const fn accepted(self) -> Option<&'static str> {
+        Some(match self {
+            Self::Omega
+            | Self::Mass
+            | Self::Stiffness
+            | Self::ClosingSpeed
+            | Self::ThresholdImpulse
+            | Self::KernelTimeConstant
+            | Self::Mass1
+            | Self::Stiffness1
+            | Self::Mass2
+            | Self::Stiffness2 => "values in [1e-30, 1e30]",
+            Self::PreloadForce => "values in [1e-30, 1e30], on a scene type that takes a preload",
+            Self::Damping1 | Self::Damping2 => "0 or values in [1e-30, 1e30]",
+            Self::Delta => {
+                "0 (grazing) or |gap| in [1e-30, 1e30], on the side the scene type takes \
+                 (Preload: < 0, Gap: > 0)"
+            }
+            Self::Restitution => {
+                "R in [1e-6, 1], with 1 - R either 0 or at least 1e-12 (R < 1 for the \
+                 preload shortcuts, whose bounce must end)"
+            }
+            Self::OneMinusRestitution => "0 or values in [1e-12, 1 - 1e-6]",
+            Self::DampingRatio => "0 or values in [1e-12, 1e3]",
+            Self::ThresholdFraction => "values in (0, 1)",
+            Self::KernelAmplitude => {
+                "kappa tau below Omega^2 (the kernel's static stiffness must leave the spring \
+                 a restoring force)"
+            }
+            Self::HarmonicTolerance => "values in [16 epsilon of the float, 0.1]",
+            Self::MarginFactor => "values >= 1",
+            Self::Time => {
+                "at most 32,767 samples, the debouncer's counter (from saved bytes: what a \
+                 learner saves)"
+            }
+            Self::Tolerance | Self::MarginExtra | Self::SamplePeriod | Self::Threshold => {
+                return None
+            }
+        })
+    }
+}
+
 impl fmt::Display for Parameter {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.name())
@@ -153,7 +207,11 @@ impl fmt::Display for Reason {
 /// use contact_bounce::{Error, Parameter, Reason};
 /// let e = Error::new(Parameter::Restitution, Reason::OutOfRange);
 /// assert_eq!(e.parameter(), Parameter::Restitution);
-/// assert_eq!(format!("{e}"), "restitution is out of range");
+/// assert_eq!(
+///     format!("{e}"),
+///     "restitution is out of range: the model takes R in [1e-6, 1], with 1 - R either 0 or at \
+///      least 1e-12 (R < 1 for the preload shortcuts, whose bounce must end)"
+/// );
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
@@ -182,7 +240,11 @@ impl Error {
 
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{} {}", self.parameter, self.reason)
+        write!(f, "{} {}", self.parameter, self.reason)?;
+        match (self.reason, self.parameter.accepted()) {
+            (Reason::OutOfRange, Some(range)) => write!(f, ": the model takes {range}"),
+            _ => Ok(()),
+        }
     }
 }
 

@@ -434,7 +434,7 @@ impl SceneInput {
     fn fault(&self, e: contact_bounce::Error) -> FieldError {
         let parameter = e.parameter();
         if e.reason() == contact_bounce::Reason::OutOfRange {
-            if let (Some(value), Some(range)) = (self.value_of(parameter), accepted(parameter)) {
+            if let (Some(value), Some(range)) = (self.value_of(parameter), parameter.accepted()) {
                 let name = parameter.name();
                 // As written in a scene file: 1.2, 1e-7, 1e31 (not 0.0000001).
                 let shown = if value == 0.0 || (1e-4..1e7).contains(&value.abs()) {
@@ -583,39 +583,4 @@ impl SceneInput {
             Err(e) => Err(self.fault(*e)),
         }
     }
-}
-
-/// What the model takes for a parameter it can refuse as out of range, in a scene file's terms.
-fn accepted(parameter: contact_bounce::Parameter) -> Option<String> {
-    use contact_bounce::{
-        scene::LARGEST_DAMPING, scene::PHYSICAL_RANGE, scene::SMALLEST_RATE,
-        scene::SMALLEST_RESTITUTION, Parameter as P,
-    };
-    let (lo, hi) = PHYSICAL_RANGE;
-    Some(match parameter {
-        P::Omega
-        | P::Mass
-        | P::Stiffness
-        | P::PreloadForce
-        | P::ClosingSpeed
-        | P::ThresholdImpulse
-        | P::KernelTimeConstant
-        | P::Mass1
-        | P::Stiffness1
-        | P::Mass2
-        | P::Stiffness2 => format!("values in [{lo:e}, {hi:e}]"),
-        P::Damping1 | P::Damping2 => format!("0 or values in [{lo:e}, {hi:e}]"),
-        P::Delta => format!("0 (grazing) or |gap| in [{lo:e}, {hi:e}]"),
-        P::Restitution => format!(
-            "R in [{SMALLEST_RESTITUTION:e}, 1], with 1 - R either 0 or at least {SMALLEST_RATE:e}"
-        ),
-        P::DampingRatio => format!("0 or values in [{SMALLEST_RATE:e}, {LARGEST_DAMPING:e}]"),
-        P::ThresholdFraction => "values in (0, 1)".to_owned(),
-        P::KernelAmplitude => {
-            "kappa tau below Omega^2 (the kernel's static stiffness must leave the spring a \
-             restoring force)"
-                .to_owned()
-        }
-        _ => return None,
-    })
 }

@@ -522,6 +522,130 @@ fn errors_display_the_parameter_and_the_reason() {
 }
 
 #[test]
+fn out_of_range_errors_say_what_the_model_takes() {
+    use contact_bounce::scene::{
+        LARGEST_DAMPING, PHYSICAL_RANGE, SMALLEST_RATE, SMALLEST_RESTITUTION,
+    };
+    use contact_bounce::Windows;
+    // The words name the limits the validation enforces (the constants, formatted as the
+    // words write them).
+    let (lo, hi) = PHYSICAL_RANGE;
+    let physical = format!("[{lo:e}, {hi:e}]");
+    let words = |p: Parameter| p.accepted().unwrap_or_else(|| panic!("{p} has no range"));
+    for p in [
+        Parameter::Omega,
+        Parameter::Mass,
+        Parameter::Stiffness,
+        Parameter::ClosingSpeed,
+        Parameter::ThresholdImpulse,
+        Parameter::KernelTimeConstant,
+        Parameter::PreloadForce,
+        Parameter::Delta,
+        Parameter::Damping1,
+    ] {
+        assert!(words(p).contains(&physical), "{p}: {}", words(p));
+    }
+    let restitution = words(Parameter::Restitution);
+    assert!(restitution.contains(&format!("[{SMALLEST_RESTITUTION:e}, 1]")));
+    assert!(restitution.contains(&format!("at least {SMALLEST_RATE:e}")));
+    assert_eq!(
+        words(Parameter::OneMinusRestitution),
+        format!("0 or values in [{SMALLEST_RATE:e}, 1 - {SMALLEST_RESTITUTION:e}]")
+    );
+    assert_eq!(
+        words(Parameter::DampingRatio),
+        format!("0 or values in [{SMALLEST_RATE:e}, {LARGEST_DAMPING:e}]")
+    );
+    assert_eq!(Windows::MAX_TICKS, 32_767);
+    assert!(words(Parameter::Time).contains("32,767"));
+
+    // And the validation refuses just beyond them, accepts at them, and says so.
+    let says = |e: Error, p: Parameter| {
+        assert_eq!(e, Error::new(p, Reason::OutOfRange));
+        let text = e.to_string();
+        assert!(
+            text.starts_with(&format!("{} is out of range: the model takes ", p.name()))
+                && text.ends_with(words(p)),
+            "{text}"
+        );
+    };
+    let omega = |w| Contact {
+        frequency: Frequency::Omega(w),
+        ..good()
+    };
+    says(err(omega(hi * 1.01)), Parameter::Omega);
+    says(err(omega(lo * 0.99)), Parameter::Omega);
+    assert!(Scene::new(omega(lo), Undamped).is_ok() && Scene::new(omega(hi), Undamped).is_ok());
+    let restitution = |r| Contact {
+        restitution: Restitution::Coefficient(r),
+        ..good()
+    };
+    says(
+        err(restitution(SMALLEST_RESTITUTION * 0.99)),
+        Parameter::Restitution,
+    );
+    says(err(restitution(1.2)), Parameter::Restitution);
+    says(
+        err(restitution(1.0 - SMALLEST_RATE * 0.5)),
+        Parameter::Restitution,
+    );
+    assert!(Scene::new(restitution(SMALLEST_RESTITUTION), Undamped).is_ok());
+    assert!(Scene::new(restitution(1.0 - SMALLEST_RATE * 1.01), Undamped).is_ok());
+    assert!(Scene::new(restitution(1.0), Undamped).is_ok());
+    let loss = |r| Contact {
+        restitution: Restitution::Loss(r),
+        ..good()
+    };
+    says(
+        err(loss(SMALLEST_RATE * 0.5)),
+        Parameter::OneMinusRestitution,
+    );
+    says(
+        err(loss(1.0 - SMALLEST_RESTITUTION * 0.99)),
+        Parameter::OneMinusRestitution,
+    );
+    assert!(Scene::new(loss(1.0 - SMALLEST_RESTITUTION * 1.01), Undamped).is_ok());
+    for zeta in [SMALLEST_RATE * 0.5, LARGEST_DAMPING * 1.01] {
+        let e = Scene::new(good(), Viscous::new(zeta).unwrap_or_else(|e| panic!("{e}")));
+        says(e.map(|_| ()).unwrap_err(), Parameter::DampingRatio);
+    }
+    let fraction = |f| Contact {
+        threshold: Threshold::FractionOfFirst(f),
+        ..good()
+    };
+    says(err(fraction(1.0)), Parameter::ThresholdFraction);
+    says(err(fraction(0.0)), Parameter::ThresholdFraction);
+    // kappa tau at Omega^2 (1e6) leaves no restoring force; just below it is taken.
+    let kernel = |kappa| Hereditary::exponential(kappa, 1e-3).unwrap_or_else(|e| panic!("{e}"));
+    let e = Scene::new(good(), (None::<Viscous<f64>>, kernel(1e9)));
+    says(e.map(|_| ()).unwrap_err(), Parameter::KernelAmplitude);
+    assert!(Scene::new(good(), (None::<Viscous<f64>>, kernel(0.99e9))).is_ok());
+    let tolerance = |t| kernel(1e6).with_tolerance(t).map(|_| ());
+    says(tolerance(0.11).unwrap_err(), Parameter::HarmonicTolerance);
+    says(
+        tolerance(15.0 * f64::EPSILON).unwrap_err(),
+        Parameter::HarmonicTolerance,
+    );
+    assert!(tolerance(0.1).is_ok() && tolerance(16.0 * f64::EPSILON).is_ok());
+    says(
+        Margin::new(0.99, 0.0).map(|_| ()).unwrap_err(),
+        Parameter::MarginFactor,
+    );
+    let windows = |ticks| Windows::new(ticks, 1, contact_bounce::Mode::Confirm).map(|_| ());
+    says(
+        windows(Windows::MAX_TICKS + 1).unwrap_err(),
+        Parameter::Time,
+    );
+    assert!(windows(Windows::MAX_TICKS).is_ok());
+    // A reason other than the range says only itself.
+    let e = err(Contact {
+        closing_speed: -1.0,
+        ..good()
+    });
+    assert_eq!(e.to_string(), "closing_speed must be > 0");
+}
+
+#[test]
 fn f32_scenes_are_validated_the_same_way() {
     let c = Contact {
         frequency: Frequency::Omega(1000.0_f32),
