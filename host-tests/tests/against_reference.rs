@@ -865,6 +865,110 @@ fn the_exact_tier_solves_kernels_off_the_grid() {
     assert!(solved >= 190, "{solved}");
 }
 
+#[test]
+fn kernel_thresholds_are_counted_as_the_reference_counts_them() {
+    // The 200 kernel scenes off the grid with a threshold, on a preload also one below the
+    // impulse where the reference starts to sum its Zeno tail (a departure of 1e-8
+    // Omega |Delta|): the exact tier's last impact above and its count against the reference,
+    // which counts the tail's impacts above a threshold (it once stopped counting where the
+    // tail starts). Auto's promise on that time is kept at 10 %, 1 % and 0.1 %.
+    use contact_bounce::{
+        tiers::Tier, Contact, Frequency, Hereditary, Offset, Restitution, Scene, Threshold,
+        Tolerance, Viscous,
+    };
+    use host_tests::grid::kernel_off_grid;
+    use host_tests::reference::hereditary::simulate as simulate_kernel;
+    let (mut compared, mut below_tail) = (0, 0);
+    for scene in kernel_off_grid(200, 0x6b65_726e) {
+        let k = scene.reference;
+        let first = (1.0 + k.restitution) * k.closing_speed;
+        for fraction in [1e-3, 1e-10] {
+            let threshold = fraction * first;
+            let tail_start = 2.0 * 1e-8 * k.omega * k.delta.abs();
+            if k.delta > 0.0 && fraction < 1e-3 {
+                continue; // (a gap ends long before; one threshold is enough there)
+            }
+            let exact = simulate_kernel(
+                &host_tests::reference::hereditary::Kernelled {
+                    threshold: Some(threshold),
+                    ..k
+                },
+                50_000_000,
+            )
+            .expect("reference");
+            let (Some(truth), Some(count)) = (exact.last_above_time, exact.impacts_above) else {
+                continue;
+            };
+            let core = Scene::new(
+                Contact {
+                    frequency: Frequency::Omega(k.omega),
+                    offset: Offset::Delta(k.delta),
+                    restitution: Restitution::Coefficient(k.restitution),
+                    closing_speed: k.closing_speed,
+                    threshold: Threshold::Impulse(threshold),
+                },
+                (
+                    Viscous::optional(k.zeta).expect("valid"),
+                    Hereditary::exponential(k.kappa, k.tau).expect("valid"),
+                ),
+            )
+            .expect("valid");
+            let p = core.predict(Method::Exact {
+                max_impacts: contact_bounce::tiers::EXACT_MAX_IMPACTS,
+            });
+            if p.tier != Tier::Exact
+                || p.approximations != contact_bounce::tiers::Approximations::NONE
+            {
+                continue;
+            }
+            compared += 1;
+            if threshold < tail_start {
+                below_tail += 1;
+            }
+            #[allow(clippy::cast_precision_loss)]
+            let count = count as f64;
+            assert_eq!(
+                p.impacts_above.value(),
+                Some(count),
+                "{} at {fraction}: {p:?}",
+                scene.name
+            );
+            // (A gap whose first flight does not return has its last impact above at 0.)
+            let relative = |t: f64| {
+                if truth == 0.0 {
+                    t.abs()
+                } else {
+                    (t / truth - 1.0).abs()
+                }
+            };
+            let time = p.last_above_time.seconds().expect("finite");
+            let off = relative(time);
+            assert!(
+                off < 1e-9,
+                "{} at {fraction}: {time} vs {truth}",
+                scene.name
+            );
+            for tol in [0.1, 0.01, 0.001] {
+                let tolerance = Tolerance::new(tol).expect("valid");
+                let a = core.predict(Method::Auto(tolerance));
+                assert!(a.promises(tolerance), "{} at {tol}: {a:?}", scene.name);
+                let off = relative(a.last_above_time.seconds().expect("finite"));
+                assert!(
+                    off <= tol,
+                    "{} at {tol}: {:?} off {off:e}",
+                    scene.name,
+                    a.tier
+                );
+            }
+        }
+    }
+    eprintln!("kernel thresholds: {compared} compared, {below_tail} below the reference's tail");
+    assert!(
+        compared >= 250 && below_tail >= 50,
+        "{compared}, {below_tail}"
+    );
+}
+
 /// Every tier, and Auto at 10 %, 1 % and 0.1 %: what two builds of one scene must agree on.
 fn every_method<F: contact_bounce::Float>() -> Vec<contact_bounce::Method<F>> {
     use contact_bounce::{Method, Nodes, Tolerance};
