@@ -304,8 +304,12 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
     }
 
     /// t_b2 = J_B^2 / (8 zeta Omega^3 Delta^2) (docs/physics.md sec. 5): gap, viscous, R = 1.
-    /// Rarely within 10 %: needs J_B << 0.3 Omega |Delta| and many impacts (10 % given for
-    /// j0 <= 0.03). `None` unless a gap with zeta > 0.
+    /// Rarely within 10 %: it needs J_B << 0.3 Omega |Delta| and many impacts, which a small
+    /// J_B seldom has. It states no expected error: where it was given 10 % (j0 <= 0.03), the
+    /// fuzzing harness found it 11-118 % off; in a sweep of gaps (j0 3e-4 to 0.03, R 0.1-1,
+    /// zeta 1e-9 to 0.3, against the exact tier) 20 of the 49 that bounced more than once were
+    /// within 10 % (those with many impacts), the median 18 % off and the worst 128 %. `None`
+    /// unless a gap with zeta > 0.
     #[must_use]
     pub fn t_b2(&self) -> Option<Estimate<F>> {
         self.t_b2_unbounded().and_then(Estimate::in_range)
@@ -322,7 +326,7 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
         let omega = self.omega();
         Some(Estimate {
             time: start * start / (F::TWO * zeta * omega * q * q),
-            expected_error: accuracy::t_b2(start / (omega * self.delta())),
+            expected_error: None,
         })
     }
 

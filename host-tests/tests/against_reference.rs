@@ -511,7 +511,11 @@ fn kernels_keep_their_expected_error() {
             }
         }
     }
-    assert!(stated >= 25, "{stated}");
+    // 14 of the grid's figures remain: the averaged model's gap figure now needs a viscous
+    // zeta of 1e-3 or more (its measured domain; below it a sweep of gaps found it off by up to
+    // 5 times), and the kernel grid's gaps have no viscous damping (their damping is the
+    // kernel's; 25 were stated before).
+    assert!(stated >= 14, "{stated}");
     assert!(
         problems.is_empty(),
         "{} problems:\n{}",

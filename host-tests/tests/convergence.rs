@@ -101,6 +101,135 @@ fn averaged_tends_to_t_b2_and_t_b2r_as_j0_vanishes() {
 }
 
 #[test]
+fn t_b2_states_no_figure_where_it_is_far_off() {
+    // The gap's closed forms once stated 10 % for j0 <= 0.03; the fuzzing harness found them
+    // 11-118 % off there. Against the exact tier on gaps with j0 3e-4 to 0.03, R 0.1-1 and
+    // zeta 1e-9 to 0.3: the bounces of more than one impact (the others end at the first
+    // contact, which every tier reports exactly) are mostly well beyond 10 %, so the closed
+    // tier states no figure for them (docs/physics.md sec. 5 gives these counts).
+    use contact_bounce::tiers::{Approximations, ClosedForm, Tier};
+    let (omega, delta) = (1000.0, 1e-3);
+    let mut errors = Vec::new();
+    for r in [0.1, 0.3, 0.5, 0.7, 0.9, 0.99, 1.0] {
+        for zeta in [1e-9, 1e-6, 1e-4, 1e-3, 1e-2, 0.1, 0.3] {
+            for j0 in [3e-4, 1e-3, 3e-3, 1e-2, 3e-2] {
+                let scene = Scene::new(
+                    Contact {
+                        frequency: Frequency::Omega(omega),
+                        offset: Offset::Delta(delta),
+                        restitution: Restitution::Coefficient(r),
+                        closing_speed: j0 * omega * delta / (2.0 * r),
+                        threshold: Threshold::None,
+                    },
+                    Viscous::new(zeta).unwrap(),
+                )
+                .unwrap();
+                let closed = scene.predict(Method::Closed);
+                if !matches!(
+                    closed.tier,
+                    Tier::Closed(ClosedForm::Tb2 | ClosedForm::Tb2r)
+                ) {
+                    continue;
+                }
+                assert_eq!(closed.expected_error, None, "r {r} zeta {zeta} j0 {j0}");
+                let exact = scene.predict(Method::Exact {
+                    max_impacts: 10_000_000,
+                });
+                assert_eq!(exact.approximations, Approximations::NONE);
+                let (Some(t), Some(u)) = (closed.bounce_time(), exact.bounce_time()) else {
+                    continue;
+                };
+                if exact.impacts_total.value().is_some_and(|n| n > 1.0) {
+                    errors.push(rel(t, u));
+                }
+            }
+        }
+    }
+    errors.sort_by(f64::total_cmp);
+    let within = errors.iter().filter(|e| **e <= 0.1).count();
+    let median = errors[errors.len() / 2];
+    let worst = errors[errors.len() - 1];
+    eprintln!(
+        "t_b2 / t_b2r: {within} of {} within 10 %, median {median:.3}, worst {worst:.3}",
+        errors.len()
+    );
+    assert!(errors.len() >= 40 && within < errors.len() / 2 && median > 0.1 && worst > 1.0);
+}
+
+#[test]
+fn the_averaged_gap_figure_holds_on_a_wide_sweep() {
+    // 20,000 gaps drawn across j0 0.01-40, R 0.05-1 (log-spread toward both ends) and zeta 0
+    // to 0.5 (log-spread from 1e-12): wherever the averaged tier states a figure for the end
+    // of a gap, the exact tier's end is within it. Before the figure was limited to zeta >=
+    // 1e-3 (and its 7 % branch dropped), 1,878 of 6,442 stated figures were broken here, by up
+    // to 5 times below zeta 1e-6 and 2 times below 1e-3.
+    let mut state = 0x1234_5678_9abc_def0_u64;
+    let mut next = || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        #[allow(clippy::cast_precision_loss)]
+        let u = (state >> 11) as f64 / (1_u64 << 53) as f64;
+        u
+    };
+    let log_uniform = |u: f64, lo: f64, hi: f64| (lo.ln() + u * (hi.ln() - lo.ln())).exp();
+    let (omega, delta) = (1000.0, 1e-3);
+    let (mut held, mut worst, mut broken) = (0, 0.0_f64, Vec::new());
+    for _ in 0..20_000 {
+        let r = match next() * 3.0 {
+            k if k < 1.0 => log_uniform(next(), 0.05, 1.0),
+            k if k < 2.0 => 1.0 - log_uniform(next(), 1e-6, 0.5),
+            _ => 0.05 + 0.95 * next(),
+        };
+        let zeta = match next() * 3.0 {
+            k if k < 1.0 => 0.0,
+            k if k < 2.0 => log_uniform(next(), 1e-12, 1e-3),
+            _ => log_uniform(next(), 1e-3, 0.5),
+        };
+        let j0 = log_uniform(next(), 0.01, 40.0);
+        let Ok(scene) = Scene::new(
+            Contact {
+                frequency: Frequency::Omega(omega),
+                offset: Offset::Delta(delta),
+                restitution: Restitution::Coefficient(r),
+                closing_speed: j0 * omega * delta / (2.0 * r),
+                threshold: Threshold::None,
+            },
+            Viscous::optional(zeta).unwrap(),
+        ) else {
+            continue;
+        };
+        let averaged = scene.predict(Method::Averaged(Nodes::N4));
+        let Some(stated) = averaged.expected_error else {
+            continue;
+        };
+        let exact = scene.predict(Method::Exact {
+            max_impacts: 10_000_000,
+        });
+        let (Some(t), Some(u)) = (averaged.bounce_time(), exact.bounce_time()) else {
+            continue;
+        };
+        if u <= 0.0 || exact.approximations != contact_bounce::tiers::Approximations::NONE {
+            continue;
+        }
+        held += 1;
+        let ratio = rel(t, u) / stated;
+        worst = worst.max(ratio);
+        if ratio > 1.0 {
+            broken.push(format!("R {r} zeta {zeta:e} j0 {j0}: {averaged:?} vs {u}"));
+        }
+    }
+    eprintln!("averaged gap figures: {held} held, worst at {worst:.2} of its figure");
+    assert!(held > 900, "{held}");
+    assert!(
+        broken.is_empty(),
+        "{} broken: {:?}",
+        broken.len(),
+        &broken[..broken.len().min(5)]
+    );
+}
+
+#[test]
 fn averaged_converges_as_nodes_grow() {
     // Errors against 20 nodes fall as the rule grows and reach rounding by 8-12 nodes
     // (docs/physics.md sec. 3: 8-12 nodes on panels 0.5 wide in ln J).
