@@ -271,7 +271,8 @@ pub(crate) fn reduction_flags<F: Float, D: Dissipation<F>, S: OffsetSign>(
 /// the averaged model leaves out: on the exact hereditary reference every tier is off by about
 /// that much on a preload (-13 % at 0.133, -4 % at 0.04; host-tests `kernel` checks). Beyond
 /// [`LARGEST_STATIC_SHARE`] no figure: the promise harness (`host-tests/tests/fuzz.rs`)
-/// found the averaged tier off by 1.3 to 9 times its figure there (static shares 0.2-0.9).
+/// found the averaged tier's figure exceeded there, by up to 2.6 times on preloads and 11
+/// times in gaps (static shares 0.2-0.9).
 pub(crate) fn with_reduction<F: Float, D: Dissipation<F>, S: OffsetSign>(
     scene: &Scene<F, D, S>,
     expected: Option<F>,
