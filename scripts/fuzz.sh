@@ -8,6 +8,8 @@
 #    longer (every scene: a threshold half as high; one body on a preload or at Delta = 0
 #    without a kernel: a 10 % faster closing, 10 % less restitution), through every tier: no
 #    pair of predictions may contradict the law within their expected errors;
+#  - promises: every prediction that states an expected error (the map and the exact tier also
+#    capped at 100 impacts) held to the exact tier's answer where that solved every flight;
 #  - raw-bits: FUZZ_RAW draws per float (default 3,000,000; four inputs each) of raw bit
 #    patterns and edge values into every public constructor and const fn, accepted scenes
 #    through the same checks;
@@ -81,6 +83,11 @@ so far is kept there as a regression test.
   stated; an "inconsistent" pair contradicts the law beyond the two predictions' expected
   errors. In a gap or with a kernel the last two are not laws, nor is "more damping bounces
   shorter" (counterexamples, confirmed by the host reference, in the harness's docs).
+- **promises**: every prediction of the above (the map and the exact tier also capped at 100
+  impacts, so that the averaged rest past a cap is exercised) that states an expected error,
+  held to the exact tier's answer on the same scene where that solved every flight (no
+  approximation flagged, its own figure below 1e-3): an "inconsistent" one is a broken promise,
+  its bracket t / (1 +- e) disjoint from the exact tier's. "checked" counts the predictions held.
 - **raw-bits**: raw bit patterns and edge values (zeros, subnormals, NaN, infinities, 1e+-30,
   R near 1) into every public constructor and const fn, in f32 and f64; the few scenes accepted
   go through every check. "inputs" counts the values drawn for constructors.
