@@ -365,7 +365,7 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
             .then(|| Estimate {
                 time: (self.start_impulse().ln() - end.ln()) / rate,
                 expected_error: accuracy::discreteness(self)
-                    .map(|(bias, _)| bias + F::from_f64(0.02)),
+                    .map(|(bias, _)| bias + F::from_f64(0.02) + zeta * zeta),
             })
             .and_then(Estimate::in_range)
     }

@@ -149,7 +149,10 @@ pub(crate) fn averaged<F: Float, D: Dissipation<F>, S: OffsetSign>(
                 None
             }
         }
-        Regime::Endless => discreteness(scene).map(|(bias, _)| bias + c(0.02)),
+        // (Plus zeta^2, the order the first-order averaged damping leaves out: without it a
+        // grazing preload at zeta = 0.195 was 19.8 % off where 19.5 % was stated; the fuzzing
+        // harness's promises.)
+        Regime::Endless => discreteness(scene).map(|(bias, _)| bias + c(0.02) + zeta * zeta),
         Regime::Periodic | Regime::SingleImpact => Some(F::ZERO),
     }
 }
@@ -192,12 +195,16 @@ pub(crate) fn quadrature<F: Float>(nodes: crate::Nodes) -> F {
 /// host-tests `error-table`).
 ///
 /// - Endless regimes: its first-order loss per flight, 1 - pi zeta instead of
-///   exp(-pi zeta / sqrt(1 - zeta^2)), drifts the impact count by ~ pi zeta / 2; once off by
-///   one impact, the time is off by 1/m (m the last impact above the threshold).
+///   exp(-pi zeta / sqrt(1 - zeta^2)), drifts the impact count by
+///   ln(1 - pi zeta) sqrt(1 - zeta^2) / (pi zeta) - 1 (~ pi zeta / 2); once off by one impact,
+///   the time is off by 1/m (m the last impact above the threshold).
 /// - Gap: 2 % (zeta <= 1e-3) and 12 % (zeta <= 0.01) of docs/physics.md hold with many impacts; it
-///   can also misjudge the last return by one flight: 1.1 spread / (N - 2) of the end time, N
-///   its `impacts_total`, spread the longest flight over the first (no promise below 3
-///   impacts: the truth may be a single impact).
+///   can also misjudge the last return by two flights: 2.2 spread / (N - 3) of the end time, N
+///   its `impacts_total` (N - 3 the flights the truth has at least), spread the longest flight
+///   over the first (no promise below 4 impacts: the truth may be a single impact). (One
+///   flight, 1.1 spread / (N - 2), was what the error table showed; on a wider sweep of gaps,
+///   lightly damped ones below zeta = 1e-3 ended two impacts early, 1.8 times beyond that
+///   figure: host-tests `convergence`, `the_map_gap_figure_holds_on_a_wide_sweep`.)
 /// - Preload: 0.3 % (zeta <= 0.01) and 2.5 % (zeta <= 0.1) of docs/physics.md hold up to j0 = 1;
 ///   measured up to j0 = 10: 0.4 % and 4.4 % (bounded here by 0.5 % and 5 %).
 pub(crate) fn map<F: Float, D: Dissipation<F>, S: OffsetSign>(
@@ -214,14 +221,23 @@ pub(crate) fn map<F: Float, D: Dissipation<F>, S: OffsetSign>(
     let zeta = dissipation.damping_ratio();
     if scene.regime() == Regime::Endless {
         let (_, last) = discreteness(scene)?;
-        return (zeta <= c(0.1)).then(|| F::PI * zeta * F::HALF + F::ONE / last + c(0.003));
+        // The count's drift in full: ln(1 - pi zeta) sqrt(1 - zeta^2) / (pi zeta) - 1 (its
+        // first order, pi zeta / 2, fell short at zeta = 0.096: 18.3 % off where 18.1 % was
+        // stated; the fuzzing harness's promises).
+        let loss = F::PI * zeta;
+        let drift = if zeta > F::ZERO {
+            -(-loss).ln_1p() * (F::ONE - zeta * zeta).sqrt() / loss - F::ONE
+        } else {
+            F::ZERO
+        };
+        return (zeta <= c(0.1)).then(|| drift + F::ONE / last + c(0.003));
     }
     if scene.is_gap() {
-        let flights = impacts_total? - F::TWO;
+        let flights = impacts_total? - c(3.0);
         if flights < F::ONE {
             return None;
         }
-        let one_flight = c::<F>(1.1) * flight_spread(scene) / flights;
+        let two_flights = c::<F>(2.2) * flight_spread(scene) / flights;
         let base: F = if zeta <= c(1e-3) {
             c(0.02)
         } else if zeta <= c(0.01) {
@@ -229,7 +245,7 @@ pub(crate) fn map<F: Float, D: Dissipation<F>, S: OffsetSign>(
         } else {
             return None;
         };
-        return Some(base + one_flight);
+        return Some(base + two_flights);
     }
     let j0 = scene.dimensionless_impulse()?;
     let (near, far): (F, F) = if zeta <= c(0.01) {
@@ -281,7 +297,11 @@ pub(crate) fn with_reduction<F: Float, D: Dissipation<F>, S: OffsetSign>(
     if share > c(LARGEST_STATIC_SHARE) {
         return None;
     }
-    reduced(scene, Some(expected? + share))
+    // The tier's own error and the share compound: (1 + e)(1 + s) - 1. (Added, e + s fell
+    // short on a kernel at s = 0.134 whose Zeno figure was 0.57: 72.4 % off where 71.3 % was
+    // stated; the fuzzing harness's promises.)
+    let expected = expected?;
+    reduced(scene, Some(expected + share + expected * share))
 }
 
 /// The largest kernel static share (kappa tau / Omega^2) where the tiers that average the
