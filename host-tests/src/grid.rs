@@ -402,6 +402,10 @@ pub fn two_body_grid() -> Vec<TwoBodyScene> {
     out
 }
 
+/// Viscous damping (or none) beside a relaxation kernel: the dissipation of
+/// [`KernelScene::core_with_viscous`].
+pub type ViscousAndKernel = (Option<Viscous<f64>>, contact_bounce::Hereditary<f64>);
+
 /// A scene with a relaxation kernel: the exact hereditary reference against the core.
 #[derive(Debug, Clone)]
 pub struct KernelScene {
@@ -412,7 +416,8 @@ pub struct KernelScene {
 }
 
 impl KernelScene {
-    /// The core's scene (restitution and the kernel; no viscous damping).
+    /// The core's scene (restitution and the kernel; no viscous damping: the reference's
+    /// zeta is not read, and is 0 on [`kernel_grid`]; see [`KernelScene::core_with_viscous`]).
     ///
     /// # Errors
     /// When the core refuses the scene.
@@ -429,6 +434,32 @@ impl KernelScene {
                 threshold: r.threshold.map_or(Threshold::None, Threshold::Impulse),
             },
             contact_bounce::Hereditary::exponential(r.kappa, r.tau)?,
+        )
+    }
+
+    /// The core's scene with the reference's viscous damping beside the kernel (zeta may be
+    /// 0: the scenes of [`kernel_off_grid`]), at `threshold` (the reference's own is not
+    /// read, so that one scene can be tried at several).
+    ///
+    /// # Errors
+    /// When the core refuses the scene.
+    pub fn core_with_viscous(
+        &self,
+        threshold: Threshold<f64>,
+    ) -> Result<Scene<f64, ViscousAndKernel>, contact_bounce::Error> {
+        let r = &self.reference;
+        Scene::new(
+            Contact {
+                frequency: Frequency::Omega(r.omega),
+                offset: Offset::Delta(r.delta),
+                restitution: Restitution::Coefficient(r.restitution),
+                closing_speed: r.closing_speed,
+                threshold,
+            },
+            (
+                Viscous::optional(r.zeta)?,
+                contact_bounce::Hereditary::exponential(r.kappa, r.tau)?,
+            ),
         )
     }
 }

@@ -800,10 +800,7 @@ fn auto_promises_on_every_kernel_scene_and_keeps_it() {
 fn the_exact_tier_solves_kernels_off_the_grid() {
     // 200 random kernel scenes (with and without viscous damping): the exact tier against the
     // reference, same count and within 1e-9, and Auto's promises at 10 %, 1 % and 0.1 % kept.
-    use contact_bounce::{
-        tiers::Tier, Contact, Frequency, Hereditary, Offset, Restitution, Scene, Threshold,
-        Tolerance, Viscous,
-    };
+    use contact_bounce::{tiers::Tier, Threshold, Tolerance};
     use host_tests::grid::kernel_off_grid;
     use host_tests::reference::hereditary::simulate as simulate_kernel;
     let mut worst = (0.0_f64, String::new());
@@ -820,20 +817,7 @@ fn the_exact_tier_solves_kernels_off_the_grid() {
                 (t / truth - 1.0).abs()
             }
         };
-        let core = Scene::new(
-            Contact {
-                frequency: Frequency::Omega(k.omega),
-                offset: Offset::Delta(k.delta),
-                restitution: Restitution::Coefficient(k.restitution),
-                closing_speed: k.closing_speed,
-                threshold: Threshold::None,
-            },
-            (
-                Viscous::optional(k.zeta).expect("valid"),
-                Hereditary::exponential(k.kappa, k.tau).expect("valid"),
-            ),
-        )
-        .expect("valid");
+        let core = scene.core_with_viscous(Threshold::None).expect("valid");
         let p = core.predict(Method::Exact {
             max_impacts: contact_bounce::tiers::EXACT_MAX_IMPACTS,
         });
@@ -876,10 +860,7 @@ fn kernel_thresholds_are_counted_as_the_reference_counts_them() {
     // Omega |Delta|): the exact tier's last impact above and its count against the reference,
     // which counts the tail's impacts above a threshold (it once stopped counting where the
     // tail starts). Auto's promise on that time is kept at 10 %, 1 % and 0.1 %.
-    use contact_bounce::{
-        tiers::Tier, Contact, Frequency, Hereditary, Offset, Restitution, Scene, Threshold,
-        Tolerance, Viscous,
-    };
+    use contact_bounce::{tiers::Tier, Threshold, Tolerance};
     use host_tests::grid::kernel_off_grid;
     use host_tests::reference::hereditary::simulate as simulate_kernel;
     let (mut compared, mut below_tail) = (0, 0);
@@ -903,20 +884,9 @@ fn kernel_thresholds_are_counted_as_the_reference_counts_them() {
             let (Some(truth), Some(count)) = (exact.last_above_time, exact.impacts_above) else {
                 continue;
             };
-            let core = Scene::new(
-                Contact {
-                    frequency: Frequency::Omega(k.omega),
-                    offset: Offset::Delta(k.delta),
-                    restitution: Restitution::Coefficient(k.restitution),
-                    closing_speed: k.closing_speed,
-                    threshold: Threshold::Impulse(threshold),
-                },
-                (
-                    Viscous::optional(k.zeta).expect("valid"),
-                    Hereditary::exponential(k.kappa, k.tau).expect("valid"),
-                ),
-            )
-            .expect("valid");
+            let core = scene
+                .core_with_viscous(Threshold::Impulse(threshold))
+                .expect("valid");
             let p = core.predict(Method::Exact {
                 max_impacts: contact_bounce::tiers::EXACT_MAX_IMPACTS,
             });

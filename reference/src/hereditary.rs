@@ -281,15 +281,13 @@ pub fn simulate(k: &Kernelled, budget: u64) -> Result<Outcome, Failure> {
             // out, a threshold below the tail's start was reported crossed where the tail
             // starts: 8,046 impacts where 10,376 are above).
             if still_above {
-                if let Some(threshold) = k.threshold {
-                    let p_next = (1.0 + r) * departure;
-                    if p_next >= threshold {
-                        let more = ((p_next / threshold).ln() / -r.ln()).floor() + 1.0;
-                        last_above = time.value() + t_f * (1.0 - r.powf(more)) / (1.0 - r);
-                        #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
-                        let extra = more as u64;
-                        count_above += extra;
-                    }
+                let first = (1.0 + r) * departure;
+                if let Some((more, flights)) = k
+                    .threshold
+                    .and_then(|end| crate::tail_above(first, r, t_f, end))
+                {
+                    last_above = time.value() + flights;
+                    count_above += more;
                 }
             }
             return Ok(Outcome::accumulated(

@@ -190,6 +190,21 @@ impl Sum {
 /// Impacts a simulation may make before it gives up.
 pub const DEFAULT_BUDGET: u64 = 50_000_000;
 
+/// A summed Zeno tail's impacts at or above `threshold`: the tail's impulses are `first`,
+/// `first q`, `first q^2`, ... and its flights `flight`, `flight q`, ... (0 < q < 1). Returns
+/// how many impulses are at or above the threshold and the time from the tail's start to the
+/// last of them (the flights before it), or `None` where the first is already below. The one
+/// body, the kernel and the two-body references count a threshold through their tails alike.
+pub(crate) fn tail_above(first: f64, q: f64, flight: f64, threshold: f64) -> Option<(u64, f64)> {
+    if first < threshold {
+        return None;
+    }
+    let more = ((first / threshold).ln() / -q.ln()).floor() + 1.0;
+    #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+    let count = more as u64;
+    Some((count, flight * (1.0 - q.powf(more)) / (1.0 - q)))
+}
+
 /// Simulates one body exactly (see [`one_body`]).
 ///
 /// # Errors
@@ -305,15 +320,11 @@ pub fn simulate_observed(
             let q = restitution * returned / departure;
             let start = time.value();
             if still_above {
-                if let Some(end) = threshold {
-                    let p_next = impulse(returned);
-                    if p_next >= end {
-                        let more = ((p_next / end).ln() / -q.ln()).floor() + 1.0;
-                        last_above = start + t_f * (1.0 - q.powf(more)) / (1.0 - q);
-                        #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
-                        let extra = more as u64;
-                        count_above += extra;
-                    }
+                if let Some((more, flights)) =
+                    threshold.and_then(|end| tail_above(impulse(returned), q, t_f, end))
+                {
+                    last_above = start + flights;
+                    count_above += more;
                 }
             }
             break (Some(start + t_f / (1.0 - q)), None);

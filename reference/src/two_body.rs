@@ -469,16 +469,14 @@ fn simulate_with_tail(
             let t_f = departure / flight.g[2];
             let t_stick = time.value() + t_f / (1.0 - r);
             ever_infinite = true;
-            if let Some(end) = s.threshold {
-                // The tail's impulses (1 + R) a R^k: those still at or above the threshold.
-                let p_next = (1.0 + r) * departure;
-                if p_next >= end {
-                    let more = ((p_next / end).ln() / -r.ln()).floor() + 1.0;
-                    last_above = time.value() + t_f * (1.0 - r.powf(more)) / (1.0 - r);
-                    #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
-                    let extra = more as u64;
-                    count_above += extra;
-                }
+            // The tail's impulses (1 + R) a R^k: those still at or above the threshold.
+            let p_next = (1.0 + r) * departure;
+            if let Some((more, flights)) = s
+                .threshold
+                .and_then(|end| crate::tail_above(p_next, r, t_f, end))
+            {
+                last_above = time.value() + flights;
+                count_above += more;
             }
             // The pair sticks at the tail's end: carry the last impact's state (the bodies
             // together, at the centre of mass's velocity) through the tail, whose duration the
