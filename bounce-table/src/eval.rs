@@ -188,6 +188,22 @@ fn core_result<F: Float>(input: &SceneInput, options: &Options) -> Result<Value,
     Ok(out)
 }
 
+/// The exact reference's input for one body with viscous damping (or none), from the core's
+/// scene as the core validated it: the one place a scene crosses to the reference's
+/// one-body simulation. (A kernel or a second body is not read here: see [`exact_outcome`].)
+pub(crate) fn one_body<D: contact_bounce::scene::Dissipation<f64>>(
+    scene: &contact_bounce::Scene<f64, D>,
+) -> OneBody {
+    OneBody {
+        omega: scene.omega(),
+        delta: scene.delta(),
+        restitution: scene.restitution(),
+        zeta: scene.dissipation().damping_ratio(),
+        closing_speed: scene.closing_speed(),
+        threshold: scene.threshold_impulse(),
+    }
+}
+
 /// The exact reference's outcome for a scene (one body, two bodies, or one body with a kernel).
 ///
 /// # Errors
@@ -232,15 +248,7 @@ pub fn exact_outcome(input: &SceneInput) -> Result<reference::Outcome, FieldErro
         };
         reference::two_body::simulate(&pair, reference::DEFAULT_BUDGET).map_err(failed)?
     } else {
-        let one = OneBody {
-            omega: scene.omega(),
-            delta: scene.delta(),
-            restitution: scene.restitution(),
-            zeta: scene.dissipation().damping_ratio(),
-            closing_speed: scene.closing_speed(),
-            threshold: scene.threshold_impulse(),
-        };
-        reference::simulate(&one, reference::DEFAULT_BUDGET).map_err(failed)?
+        reference::simulate(&one_body(&scene), reference::DEFAULT_BUDGET).map_err(failed)?
     };
     Ok(out)
 }

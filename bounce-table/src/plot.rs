@@ -539,16 +539,8 @@ pub fn plots(
     // Exact impacts: every one for one body, the first five otherwise.
     let mut impacts = Vec::new();
     if input.kernel.is_none() && !matches!(input.spring, Spring::TwoBody(..)) {
-        let one = contact_bounce_reference::OneBody {
-            omega: scene.omega(),
-            delta: scene.delta(),
-            restitution: r,
-            zeta: contact_bounce::scene::Dissipation::damping_ratio(scene.dissipation()),
-            closing_speed: scene.closing_speed(),
-            threshold: scene.threshold_impulse(),
-        };
         let _ = contact_bounce_reference::simulate_observed(
-            &one,
+            &crate::eval::one_body(&scene),
             contact_bounce_reference::DEFAULT_BUDGET,
             |t, p| {
                 if t <= span && impacts.len() < 5000 {
