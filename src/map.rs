@@ -11,7 +11,10 @@
 //! from its return; a scene type without viscous damping links none of this.
 //!
 //! Iterations are bounded: a preload's Zeno tail is summed on the small-impulse asymptote once
-//! J < [`Tuning::TAIL_CUTOFF`](crate::model::Tuning::TAIL_CUTOFF) Omega |Delta|; past
+//! J < 5e-3 Omega |Delta| where the scene dissipates between impacts (a few 1e-4 of the tail
+//! left out, a tenth of the map's smallest figure), and once J <
+//! [`Tuning::TAIL_CUTOFF`](crate::model::Tuning::TAIL_CUTOFF) Omega |Delta| (exact to
+//! rounding) with restitution alone; past
 //! `max_impacts` the averaged model finishes
 //! the sum (flagged [`Approximations::MAP_CONTINUED_AVERAGED`]). [`MapImpacts`] yields the
 //! impacts themselves.
@@ -50,8 +53,9 @@ pub enum MapEnd<F> {
     /// A preload's flight loses all its impulse to damping (first order): the contact closes
     /// after this flight time (s).
     Closes(F),
-    /// A preload's departure fell below [`Tuning::TAIL_CUTOFF`](crate::model::Tuning::TAIL_CUTOFF)
-    /// Omega |Delta| (and below the
+    /// A preload's departure fell below where its tail is summed (5e-3 Omega |Delta| where the
+    /// scene dissipates, else [`Tuning::TAIL_CUTOFF`](crate::model::Tuning::TAIL_CUTOFF)
+    /// Omega |Delta|; see the module docs) (and below the
     /// threshold, if any: the impacts above it are all iterated, so they are counted one by
     /// one): the rest is a Zeno tail, from this generating impulse (m/s).
     ZenoTail(F),
@@ -162,7 +166,7 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Iterator for MapImpacts<'_, F, 
         let stop = if scene.regime() == Regime::SingleImpact {
             Some(MapEnd::NoReturn)
         } else if preload
-            && j <= F::TAIL_CUTOFF * scene.omega() * scene.delta().abs()
+            && j <= tail_cutoff(scene) * scene.omega() * scene.delta().abs()
             && scene.threshold_generating().is_none_or(|end| j < end)
         {
             Some(MapEnd::ZenoTail(j))
@@ -203,6 +207,19 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Iterator for MapImpacts<'_, F, 
             time: self.time.value(),
             impulse: (F::ONE + restitution) * self.speed,
         })
+    }
+}
+
+/// Where a preload's Zeno tail is summed on the asymptote, relative to Omega |Delta|:
+/// [`Tuning::MAP_TAIL_CUTOFF`](crate::model::Tuning) where the scene dissipates between impacts,
+/// else (restitution alone, where the map is exact) [`Tuning::TAIL_CUTOFF`](crate::model::Tuning).
+/// (In f32 the two are one constant, and the test folds away.)
+#[inline]
+pub(crate) fn tail_cutoff<F: Float, D: Dissipation<F>, S: OffsetSign>(scene: &Scene<F, D, S>) -> F {
+    if F::MAP_TAIL_CUTOFF > F::TAIL_CUTOFF && scene.dissipation().dissipates() {
+        F::MAP_TAIL_CUTOFF
+    } else {
+        F::TAIL_CUTOFF
     }
 }
 

@@ -226,12 +226,26 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
         let averaged_error = accuracy::with_reduction(self, accuracy::averaged(self, estimate));
         let map_error = accuracy::with_reduction(self, accuracy::map(self, estimate));
         let start = self.start_impulse();
-        let floor = self
-            .threshold_generating()
-            .unwrap_or(start * F::TAIL_CUTOFF)
-            .max(F::TAIL_CUTOFF * self.omega() * self.delta().abs());
+        let floor_at = |cutoff: F| {
+            self.threshold_generating()
+                .unwrap_or(start * F::TAIL_CUTOFF)
+                .max(cutoff * self.omega() * self.delta().abs())
+        };
+        let floor = floor_at(F::TAIL_CUTOFF);
         let walk = Walk::new(self, &closed, start.ln());
         let ln_floor = floor.ln();
+        // The map sums a dissipating preload's tail from higher up (`map::tail_cutoff`; in f32
+        // the two cutoffs are one, and this folds away).
+        let ln_map_floor = if F::MAP_TAIL_CUTOFF > F::TAIL_CUTOFF && self.is_preload() {
+            let map_floor = floor_at(crate::map::tail_cutoff(self));
+            if map_floor > floor {
+                map_floor.ln()
+            } else {
+                ln_floor
+            }
+        } else {
+            ln_floor
+        };
         let (panels, _) = panel_count((walk.ln_start - ln_floor).max(F::ZERO));
         let per_evaluation = if self.dissipation().has_kernel() {
             // With a kernel an E1 evaluation costs 5.2 times more (N8 on the dome: about
@@ -242,7 +256,7 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
         };
         let averaged_cost =
             F::from_u32(panels.saturating_mul(Nodes::N8.count())) * F::from_f64(per_evaluation);
-        let map_cost = walk.down_to(ln_floor);
+        let map_cost = walk.down_to(ln_map_floor);
         let exact_cost = exact::cost(self, &walk);
         let fits = |e: Option<F>| e.is_some_and(|e| e <= tolerance.get());
         // The tiers expected to promise, cheapest first (on a tie the map, then the averaged
