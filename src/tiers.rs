@@ -4,8 +4,8 @@
 //! |---|---|---|
 //! | `Closed` | the closed forms t_b1, t_b1v, t_b2 (and their corrected forms) | tens of ns |
 //! | `Averaged(nodes)` | the averaged equation J' = E1(J), integrated by Gauss-Legendre | a few us |
-//! | `Map { max_impacts }` | the averaged model impact by impact | about 1 us |
-//! | `Exact { max_impacts }` | the exact solution, flight by flight | a few us |
+//! | `Map { max_impacts }` | the averaged model impact by impact | under 1 us |
+//! | `Exact { max_impacts }` | the exact solution, flight by flight | about 1 us |
 //! | `Auto(tolerance)` | the cheapest of them whose expected error meets the tolerance | as the tier chosen |
 //!
 //! Each gives a [`Prediction`]: the regime, the end of the bounce or the last impact above a
