@@ -54,6 +54,16 @@ for target in "${targets[@]}"; do
   done
 done
 
+step "MSRV: the core builds for every Cortex-M target and passes its tests on Rust $(sed -n 's/^rust-version = "\(.*\)"/\1/p' Cargo.toml)"
+msrv=$(sed -n 's/^rust-version = "\(.*\)"/\1/p' Cargo.toml)
+rustup toolchain install "$msrv" --profile minimal
+rustup target add --toolchain "$msrv" "${targets[@]}"
+for target in "${targets[@]}"; do
+  echo "  $target (all features) on $msrv"
+  cargo +"$msrv" build --quiet -p contact-bounce --target "$target" --all-features --target-dir target/msrv
+done
+cargo +"$msrv" test -p contact-bounce --target-dir target/msrv 2>&1 | tee -a "$log"
+
 step "firmware size report (fails if restitution-only firmware links a sine; README and docs/size-report.md current)"
 sizes=$(scripts/size-report.sh)
 echo "$sizes"
