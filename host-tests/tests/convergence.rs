@@ -480,7 +480,7 @@ fn map_hands_over_to_averaged_past_its_cap() {
 fn the_map_sums_a_dissipating_tail_early_and_a_lossless_one_exactly() {
     // Where the scene dissipates, the map hands a preload's Zeno tail to the asymptote once the
     // generating impulse is below 5e-3 Omega |Delta| (the asymptote then leaves out a few 1e-4
-    // of the tail, a tenth of the map's smallest figure). f64 once walked down to 6e-6: 31
+    // of the tail, a tenth of the map's smallest figure). f64 once walked down to 6e-6: 32
     // impacts on the tactile dome where 13 do, and its maps took longer than the exact tier.
     // With restitution alone the map is exact, and keeps walking to 6e-6: its end is the exact
     // sum's to rounding.
