@@ -205,7 +205,7 @@ fi
 # method is a constant, so each links its tier alone. Crate bytes: its text minus tier_empty's
 # (the same skeleton, no crate code). The count is the tier's call (and its window) between
 # the second and third marks: instructions under QEMU, cycles under simavr.
-tiers=(tb1v_window restitution_averaged restitution_averaged_window closed averaged map auto auto_restitution exact)
+tiers=(tb1v_window restitution_averaged restitution_averaged_window closed averaged map auto auto_restitution auto_exact exact)
 declare -A crate cycles heavy
 largest() { # elf empty-elf nm -> the 4 largest code symbols the empty firmware lacks, "name size"
   python3 - "$1" "$2" "$3" <<'PY'
@@ -276,7 +276,9 @@ marks_qemu() { # elf target -> one count per interval between marks
   echo "type that links no damping (validated as \`Scene<f32, Undamped, Preload>\`); restitution-averaged-window the"
   echo "lean averaged form \`preload_restitution_bounce_seconds\` (the same time in closed form from the"
   echo "inputs, no \`Scene\` and no expected error) and its window. Auto at 1 %; auto-restitution Auto"
-  echo "at 1 % on the dome without damping (each tier it may choose linked for restitution only). The Uno's"
+  echo "at 1 % on the dome without damping (each tier it may choose linked for restitution only); auto-exact"
+  echo "Auto at 1 % among the closed forms and the exact tier alone (\`Scene::predict_auto_among::<{ AutoTiers::EXACT }>\`:"
+  echo "no map and no averaged model linked, except the averaged rest past the exact tier's cap). The Uno's"
   echo "float arithmetic is avr-libc's (\`.cargo/config.toml\`); a firmware that does not fit its 32 KB"
   echo "shows what it needs."
   echo
@@ -362,13 +364,16 @@ fi
   goal thumbv7em-none-eabihf restitution-averaged-window "crate bytes" 2048 "${crate[thumbv7em-none-eabihf restitution-averaged-window]:-}"
   goal thumbv7em-none-eabihf auto "crate bytes" 8192 "${crate[thumbv7em-none-eabihf auto]:-}"
   goal thumbv6m-none-eabi auto "crate bytes" 12288 "${crate[thumbv6m-none-eabi auto]:-}"
+  goal thumbv7em-none-eabihf auto-exact "crate bytes" 8192 "${crate[thumbv7em-none-eabihf auto-exact]:-}"
+  goal thumbv6m-none-eabi auto-exact "crate bytes" 12288 "${crate[thumbv6m-none-eabi auto-exact]:-}"
   if [ "$uno" = 1 ]; then
     for tier in "${tiers[@]}"; do
-      case $tier in auto | auto_restitution) continue ;; esac
+      case $tier in auto | auto_restitution | auto_exact) continue ;; esac
       goal avr-atmega328p "${tier//_/-}" "crate bytes" 12288 "${crate[avr-atmega328p ${tier//_/-}]:-}"
     done
     goal avr-atmega328p auto "crate bytes" 16384 "${crate[avr-atmega328p auto]:-}"
     goal avr-atmega328p auto-restitution "crate bytes" 16384 "${crate[avr-atmega328p auto-restitution]:-}"
+    goal avr-atmega328p auto-exact "crate bytes" 16384 "${crate[avr-atmega328p auto-exact]:-}"
     goal avr-atmega328p tb1v-window cycles 10000 "${cycles[avr-atmega328p tb1v-window]:-}"
     goal avr-atmega328p restitution-averaged "cycles (N8; the goal is for N4)" 500000 "${cycles[avr-atmega328p restitution-averaged]:-}"
     goal avr-atmega328p map cycles 300000 "${cycles[avr-atmega328p map]:-}"

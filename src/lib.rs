@@ -33,7 +33,8 @@
 //!   typical switches (both give preload-typed scenes).
 //! - [`tiers`]: how to predict. [`Scene::predict`] with a [`Method`]: the closed forms
 //!   (nanoseconds), the averaged model, the per-impact map, the exact solution, or
-//!   [`Method::Auto`], the cheapest tier that promises a [`Tolerance`]. Each gives a
+//!   [`Method::Auto`], the cheapest tier that promises a [`Tolerance`] (and
+//!   [`Scene::predict_auto_among`], Auto among the tiers a firmware names). Each gives a
 //!   [`Prediction`] with its expected error. The leanest firmware takes a preload's inputs
 //!   straight to a time, with no `Scene`: [`tiers::preload_viscous_bounce_seconds`] (t_b1v) and
 //!   [`tiers::preload_restitution_bounce_seconds`] (the averaged model with restitution alone).

@@ -65,8 +65,40 @@ pub enum Method<F> {
     /// exact
     /// tier's at [`EXACT_MAX_IMPACTS`](crate::tiers::EXACT_MAX_IMPACTS)
     /// ([`Scene::exact_work`]); firmware that cannot afford that names a tier, or
-    /// `Method::Exact` with a smaller cap.
+    /// `Method::Exact` with a smaller cap. Every tier is linked into a firmware that names
+    /// `Auto`; [`Scene::predict_auto_among`] weighs only the tiers it names.
     Auto(Tolerance<F>),
+}
+
+/// The tiers [`Scene::predict_auto_among`] may run after the closed forms (which Auto always
+/// tries first), as bit flags to OR together. Named at compile time, the set decides what is
+/// linked: `AutoTiers::EXACT` alone links the closed forms and the exact tier, and no map,
+/// no averaged quadrature and none of their expected errors (on the Uno, Auto among all tiers
+/// does not fit its 32 KB; among the closed forms and the exact tier it does:
+/// `docs/cost-report.md`, auto-exact).
+///
+/// ```
+/// use contact_bounce::{catalogue, tiers::AutoTiers, Tolerance};
+/// let dome = catalogue::TACTILE_DOME.scene::<f32>()?;
+/// let p = dome.predict_auto_among::<{ AutoTiers::EXACT }>(Tolerance::new(0.01)?);
+/// assert!(p.promises(Tolerance::new(0.01)?)); // the exact tier always does (one body)
+/// # Ok::<(), contact_bounce::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct AutoTiers;
+
+impl AutoTiers {
+    /// The per-impact map (`Method::Map`, at [`DEFAULT_MAX_IMPACTS`](crate::tiers::DEFAULT_MAX_IMPACTS)).
+    pub const MAP: u8 = 1;
+    /// The averaged model (`Method::Averaged`, 8 nodes).
+    pub const AVERAGED: u8 = 2;
+    /// The exact tier (`Method::Exact`, at [`EXACT_MAX_IMPACTS`](crate::tiers::EXACT_MAX_IMPACTS)):
+    /// without it, Auto may have no tier that promises the tolerance (it then answers with the
+    /// smallest expected error, as `Method::Auto` does where nothing promises).
+    pub const EXACT: u8 = 4;
+    /// Every tier: what [`Method::Auto`] weighs.
+    pub const ALL: u8 = Self::MAP | Self::AVERAGED | Self::EXACT;
 }
 
 /// The tiers Auto weighs after the closed tier.
@@ -86,6 +118,16 @@ impl Candidate {
             Self::Averaged => 1,
             Self::Exact => 2,
         }
+    }
+
+    /// Whether the set `tiers` ([`AutoTiers`] flags) holds this candidate.
+    const fn within(self, tiers: u8) -> bool {
+        let bit = match self {
+            Self::Map => AutoTiers::MAP,
+            Self::Averaged => AutoTiers::AVERAGED,
+            Self::Exact => AutoTiers::EXACT,
+        };
+        tiers & bit != 0
     }
 }
 
@@ -169,7 +211,7 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
             Method::Averaged(nodes) => Averaged::new(self, nodes).predict(),
             Method::Map { max_impacts } => map::predict::<F, D, S, true>(self, max_impacts),
             Method::Exact { max_impacts } => exact::predict::<F, D, S, true>(self, max_impacts),
-            Method::Auto(tolerance) => self.auto(tolerance),
+            Method::Auto(tolerance) => self.auto::<{ AutoTiers::ALL }>(tolerance),
         }
         .within_range()
     }
@@ -200,7 +242,7 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
             Method::Averaged(nodes) => Averaged::new(self, nodes).predict_times(),
             Method::Map { max_impacts } => map::predict::<F, D, S, false>(self, max_impacts),
             Method::Exact { max_impacts } => exact::predict::<F, D, S, false>(self, max_impacts),
-            Method::Auto(tolerance) => self.auto(tolerance),
+            Method::Auto(tolerance) => self.auto::<{ AutoTiers::ALL }>(tolerance),
         }
         .bounce_time_in_range()
     }
@@ -211,53 +253,48 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
         Averaged::new(self, nodes)
     }
 
-    fn auto(&self, tolerance: Tolerance<F>) -> Prediction<F> {
+    /// [`Method::Auto`] weighing, after the closed forms, only the tiers in `TIERS` (an OR of
+    /// [`AutoTiers`] flags, named at compile time): a firmware links those tiers alone, and
+    /// none of the others' expected errors or cost estimates. With
+    /// [`AutoTiers::ALL`] it is `predict(Method::Auto(tolerance))`, bit for bit. Without
+    /// [`AutoTiers::EXACT`] nothing may promise the tolerance: check
+    /// [`Prediction::promises`].
+    #[must_use]
+    pub fn predict_auto_among<const TIERS: u8>(&self, tolerance: Tolerance<F>) -> Prediction<F> {
+        self.auto::<TIERS>(tolerance).within_range()
+    }
+
+    fn auto<const TIERS: u8>(&self, tolerance: Tolerance<F>) -> Prediction<F> {
         let closed = closed::predict::<F, D, S, true>(self);
         if closed.promises(tolerance) {
             return closed;
         }
-        // Expected errors and rough costs of the other tiers, known before running them. Costs
-        // are in map impacts: on a Cortex-M4F (f32), on the tactile dome, an impact of the map
-        // costs about 300 instructions (3594 over ~12 impacts walked before the Zeno tail) and
-        // an E1 evaluation of the averaged tier about 185 (N8: 13323 over 9 panels x 8 nodes),
-        // so 0.6 of an impact (`docs/cost-report.md`, `scripts/cost-report.sh`). The exact
-        // tier's is `exact::cost`.
+        // Expected errors and rough costs of the other tiers, known before running them
+        // (costs: `auto_costs`).
         let estimate = closed.impacts_total.value();
-        let averaged_error = accuracy::with_reduction(self, accuracy::averaged(self, estimate));
-        let map_error = accuracy::with_reduction(self, accuracy::map(self, estimate));
-        let start = self.start_impulse();
-        let floor_at = |cutoff: F| {
-            self.threshold_generating()
-                .unwrap_or(start * F::TAIL_CUTOFF)
-                .max(cutoff * self.omega() * self.delta().abs())
-        };
-        let floor = floor_at(F::TAIL_CUTOFF);
-        let walk = Walk::new(self, &closed, start.ln());
-        let ln_floor = floor.ln();
-        // The map sums a dissipating preload's tail from higher up (`map::tail_cutoff`; in f32
-        // the two cutoffs are one, and this folds away).
-        let ln_map_floor = if F::MAP_TAIL_CUTOFF > F::TAIL_CUTOFF && self.is_preload() {
-            let map_floor = floor_at(crate::map::tail_cutoff(self));
-            if map_floor > floor {
-                map_floor.ln()
-            } else {
-                ln_floor
-            }
+        // (A tier outside `TIERS` is neither estimated nor run: these tests fold away.)
+        let (use_map, use_averaged, use_exact) = (
+            Candidate::Map.within(TIERS),
+            Candidate::Averaged.within(TIERS),
+            Candidate::Exact.within(TIERS),
+        );
+        let averaged_error = if use_averaged {
+            accuracy::with_reduction(self, accuracy::averaged(self, estimate))
         } else {
-            ln_floor
+            None
         };
-        let (panels, _) = panel_count((walk.ln_start - ln_floor).max(F::ZERO));
-        let per_evaluation = if self.dissipation().has_kernel() {
-            // With a kernel an E1 evaluation costs 5.2 times more (N8 on the dome: about
-            // 69,800 instructions with a kernel, 13,350 without, `docs/cost-report.md`).
-            3.1
+        let map_error = if use_map {
+            accuracy::with_reduction(self, accuracy::map(self, estimate))
         } else {
-            0.6
+            None
         };
-        let averaged_cost =
-            F::from_u32(panels.saturating_mul(Nodes::N8.count())) * F::from_f64(per_evaluation);
-        let map_cost = walk.down_to(ln_map_floor);
-        let exact_cost = exact::cost(self, &walk);
+        // The costs only order the tiers: a set of one has nothing to order, and links none of
+        // this.
+        let (map_cost, averaged_cost, exact_cost) = if TIERS.count_ones() > 1 {
+            self.auto_costs::<TIERS>(&closed)
+        } else {
+            (F::ZERO, F::ZERO, F::ZERO)
+        };
         let fits = |e: Option<F>| e.is_some_and(|e| e <= tolerance.get());
         // The tiers expected to promise, cheapest first (on a tie the map, then the averaged
         // model, then the exact tier, which always is). A tier chosen on estimates states its
@@ -267,7 +304,7 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
         let mut order = [
             (map_cost, Candidate::Map, fits(map_error)),
             (averaged_cost, Candidate::Averaged, fits(averaged_error)),
-            (exact_cost, Candidate::Exact, true),
+            (exact_cost, Candidate::Exact, use_exact),
         ];
         // Three entries, sorted stably by cost.
         for (i, j) in [(0, 1), (1, 2), (0, 1)] {
@@ -282,7 +319,7 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
         let mut ran = [false; 3];
         for (_, candidate, expected) in order {
             if expected {
-                let p = self.run(candidate);
+                let p = self.run::<TIERS>(candidate, &closed);
                 if p.promises(tolerance) {
                     return p;
                 }
@@ -296,7 +333,7 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
         }
         for (done, candidate) in ran.into_iter().zip(Candidate::ALL) {
             if !done {
-                let p = self.run(candidate);
+                let p = self.run::<TIERS>(candidate, &closed);
                 if rank(&p) < rank(&best) {
                     best = p;
                 }
@@ -305,17 +342,87 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
         best
     }
 
-    /// One of Auto's candidates, at Auto's settings. Always inlined: outlined, it is a second
-    /// caller of each tier in every firmware (the `Auto` arm of `predict` is compiled before it
-    /// is found dead), and the inliner then outlines the tier a firmware names (+616 B for the
-    /// restitution-only averaged firmware on the M4F).
+    /// Auto's estimates of the cost of the map, the averaged model and the exact tier (`F::MAX`
+    /// for one outside `TIERS`), in map impacts: on a Cortex-M4F (f32), on the tactile dome, an
+    /// impact of the map costs about 300 instructions (3594 over ~12 impacts walked before the
+    /// Zeno tail) and an E1 evaluation of the averaged tier about 185 (N8: 13323 over 9 panels x
+    /// 8 nodes), so 0.6 of an impact (`docs/cost-report.md`, `scripts/cost-report.sh`). The
+    /// exact tier's is `exact::cost`. Inlined into its one caller, as it was written there.
     #[allow(clippy::inline_always)]
     #[inline(always)]
-    fn run(&self, candidate: Candidate) -> Prediction<F> {
+    fn auto_costs<const TIERS: u8>(&self, closed: &Prediction<F>) -> (F, F, F) {
+        let (use_map, use_averaged, use_exact) = (
+            Candidate::Map.within(TIERS),
+            Candidate::Averaged.within(TIERS),
+            Candidate::Exact.within(TIERS),
+        );
+        let start = self.start_impulse();
+        let floor_at = |cutoff: F| {
+            self.threshold_generating()
+                .unwrap_or(start * F::TAIL_CUTOFF)
+                .max(cutoff * self.omega() * self.delta().abs())
+        };
+        let floor = floor_at(F::TAIL_CUTOFF);
+        let walk = Walk::new(self, closed, start.ln());
+        let ln_floor = floor.ln();
+        // The map sums a dissipating preload's tail from higher up (`map::tail_cutoff`; in f32
+        // the two cutoffs are one, and this folds away).
+        let ln_map_floor = if use_map && F::MAP_TAIL_CUTOFF > F::TAIL_CUTOFF && self.is_preload() {
+            let map_floor = floor_at(crate::map::tail_cutoff(self));
+            if map_floor > floor {
+                map_floor.ln()
+            } else {
+                ln_floor
+            }
+        } else {
+            ln_floor
+        };
+        let averaged_cost = if use_averaged {
+            let (panels, _) = panel_count((walk.ln_start - ln_floor).max(F::ZERO));
+            let per_evaluation = if self.dissipation().has_kernel() {
+                // With a kernel an E1 evaluation costs 5.2 times more (N8 on the dome: about
+                // 69,800 instructions with a kernel, 13,350 without, `docs/cost-report.md`).
+                3.1
+            } else {
+                0.6
+            };
+            F::from_u32(panels.saturating_mul(Nodes::N8.count())) * F::from_f64(per_evaluation)
+        } else {
+            F::MAX
+        };
+        let map_cost = if use_map {
+            walk.down_to(ln_map_floor)
+        } else {
+            F::MAX
+        };
+        let exact_cost = if use_exact {
+            exact::cost(self, &walk)
+        } else {
+            F::MAX
+        };
+        (map_cost, averaged_cost, exact_cost)
+    }
+
+    /// One of Auto's candidates, at Auto's settings (outside `TIERS`, `closed`). Always
+    /// inlined: outlined, it is a second caller of each tier in every firmware (the `Auto` arm
+    /// of `predict` is compiled before it is found dead), and the inliner then outlines the tier
+    /// a firmware names (+616 B for the restitution-only averaged firmware on the M4F).
+    #[allow(clippy::inline_always)]
+    #[inline(always)]
+    fn run<const TIERS: u8>(&self, candidate: Candidate, closed: &Prediction<F>) -> Prediction<F> {
         match candidate {
-            Candidate::Map => map::predict::<F, D, S, true>(self, crate::map::DEFAULT_MAX_IMPACTS),
-            Candidate::Averaged => Averaged::new(self, Nodes::N8).predict(),
-            Candidate::Exact => exact::predict::<F, D, S, true>(self, exact::EXACT_MAX_IMPACTS),
+            Candidate::Map if Candidate::Map.within(TIERS) => {
+                map::predict::<F, D, S, true>(self, crate::map::DEFAULT_MAX_IMPACTS)
+            }
+            Candidate::Averaged if Candidate::Averaged.within(TIERS) => {
+                Averaged::new(self, Nodes::N8).predict()
+            }
+            Candidate::Exact if Candidate::Exact.within(TIERS) => {
+                exact::predict::<F, D, S, true>(self, exact::EXACT_MAX_IMPACTS)
+            }
+            // Outside `TIERS` (never expected to promise, so run only where Auto takes the
+            // smallest error of all): the closed tier's answer, which Auto already holds.
+            _ => *closed,
         }
     }
 }

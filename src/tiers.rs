@@ -19,6 +19,6 @@ pub use crate::averaged::{
 pub use crate::closed::{preload_viscous_bounce_seconds, preload_viscous_bounce_time, Estimate};
 pub use crate::exact::{EXACT_MAX_IMPACTS, KERNEL_FLIGHT_STEPS, ROOT_STEPS};
 pub use crate::map::{Impact, MapEnd, MapImpacts, DEFAULT_MAX_IMPACTS};
-pub use crate::method::{Method, Tolerance};
+pub use crate::method::{AutoTiers, Method, Tolerance};
 pub use crate::prediction::{Approximations, ClosedForm, Count, Prediction, Tier, Time};
 pub use crate::quadrature::Nodes;

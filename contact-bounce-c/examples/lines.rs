@@ -4,9 +4,9 @@
 
 use contact_bounce::{
     tiers::preload_restitution_bounce_seconds, tiers::preload_viscous_bounce_time,
-    tiers::DEFAULT_MAX_IMPACTS, tiers::EXACT_MAX_IMPACTS, Contact, Edge, Error, Frequency, Margin,
-    Method, Mode, Nodes, Offset, Parameter, Prediction, Reason, Restitution, Scene, State,
-    Threshold, Tolerance, Viscous, Window, Windows,
+    tiers::AutoTiers, tiers::DEFAULT_MAX_IMPACTS, tiers::EXACT_MAX_IMPACTS, Contact, Edge, Error,
+    Frequency, Margin, Method, Mode, Nodes, Offset, Parameter, Prediction, Reason, Restitution,
+    Scene, State, Threshold, Tolerance, Viscous, Window, Windows,
 };
 
 /// mass, stiffness, offset, R, zeta, closing speed, threshold fraction (0: none).
@@ -106,6 +106,8 @@ fn main() -> Result<(), Error> {
         ] {
             println!("{}", line(i, tier, &scene.predict(method)));
         }
+        let lean = scene.predict_auto_among::<{ AutoTiers::EXACT }>(Tolerance::new(0.01)?);
+        println!("{}", line(i, "auto-exact", &lean));
     }
     for (mode, name) in [(Mode::Confirm, "confirm"), (Mode::HoldOff, "hold-off")] {
         let windows = Windows::new(3, 3, mode)?;

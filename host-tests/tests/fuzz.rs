@@ -12,10 +12,10 @@
 //! `scripts/fuzz.sh`: 20,000).
 
 use contact_bounce::{
-    scene::TwoBody, tiers::Approximations, tiers::Averaged, tiers::Bodies, tiers::Count,
-    tiers::MapImpacts, tiers::Time, Contact, Float, Frequency, Hereditary, LearningState, Method,
-    Mode, Nodes, Offset, Prediction, Restitution, Scene, State, Threshold, Tolerance, Viscous,
-    Windows,
+    scene::TwoBody, tiers::Approximations, tiers::AutoTiers, tiers::Averaged, tiers::Bodies,
+    tiers::Count, tiers::MapImpacts, tiers::Time, Contact, Float, Frequency, Hereditary,
+    LearningState, Method, Mode, Nodes, Offset, Prediction, Restitution, Scene, State, Threshold,
+    Tolerance, Viscous, Windows,
 };
 
 struct Rng(u64);
@@ -598,6 +598,23 @@ fn check_scene<F: Float + std::fmt::Debug, D: contact_bounce::scene::Dissipation
                 "bounce_time {time:?} != predict's {:?}: {method:?}, {what}",
                 p.bounce_time()
             ));
+        }
+    }
+    // Auto among a set of tiers (firmware that cannot link them all): as sound as the rest.
+    let auto = Tolerance::new(F::from_f64(0.01)).unwrap_or_else(|_| unreachable!());
+    for (set, p) in [
+        (
+            "closed and exact",
+            scene.predict_auto_among::<{ AutoTiers::EXACT }>(auto),
+        ),
+        (
+            "closed, map and averaged",
+            scene.predict_auto_among::<{ AutoTiers::MAP | AutoTiers::AVERAGED }>(auto),
+        ),
+    ] {
+        *checked += 1;
+        if let Some(why) = fault(&p) {
+            faults.push(format!("{why}: Auto among {set}, {what}: {p:?}"));
         }
     }
 }

@@ -57,6 +57,9 @@ static void bad_inputs(void) {
     expect(cb_switch_check(&s), CB_ERR_THRESHOLD_REQUIRED, CB_PARAM_THRESHOLD, "endless, no threshold");
     expect(cb_predict_auto(&dome, NAN, &p), CB_ERR_NAN, CB_PARAM_TOLERANCE, "NaN tolerance");
     expect(cb_predict_auto(&dome, 0.0f, &p), CB_ERR_NOT_POSITIVE, CB_PARAM_TOLERANCE, "zero tolerance");
+    expect(cb_predict_auto_exact(NULL, 0.01f, &p), CB_ERR_NULL, CB_PARAM_POINTER, "NULL switch (auto-exact)");
+    expect(cb_predict_auto_exact(&dome, NAN, &p), CB_ERR_NAN, CB_PARAM_TOLERANCE, "NaN tolerance (auto-exact)");
+    expect(cb_predict_auto_exact(&dome, -1.0f, &p), CB_ERR_NOT_POSITIVE, CB_PARAM_TOLERANCE, "negative tolerance (auto-exact)");
 
     expect(cb_predict_closed(&dome, &p), CB_OK, CB_PARAM_NONE, "the dome predicts");
     expect(cb_window_ticks(NULL, 1.5f, 0.0f, 1e-5f, &ticks), CB_ERR_NULL, CB_PARAM_POINTER, "NULL prediction, window");

@@ -108,6 +108,7 @@ static inline void switch_lines(put_line put, uint32_t i) {
     prediction_line(put, i, "map", cb_predict_map(&SWITCHES[i], &p), &p);
     prediction_line(put, i, "exact", cb_predict_exact(&SWITCHES[i], &p), &p);
     prediction_line(put, i, "auto", cb_predict_auto(&SWITCHES[i], 0.01f, &p), &p);
+    prediction_line(put, i, "auto-exact", cb_predict_auto_exact(&SWITCHES[i], 0.01f, &p), &p);
 }
 
 /* The debouncer over SAMPLES with 3-sample windows, in both modes: "pin MODE i EDGE". */
