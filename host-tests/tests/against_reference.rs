@@ -528,8 +528,9 @@ fn kernels_keep_their_expected_error() {
 fn auto_keeps_its_promise_at_ten_one_and_a_tenth_of_a_percent() {
     // Auto, and Auto among the closed forms and the exact tier alone
     // (`predict_auto_among::<{ AutoTiers::EXACT }>`, the firmware that cannot link every tier),
-    // on the grid and 10,000 scenes off it. Among every tier it is `Method::Auto` bit for bit;
-    // among the map and the averaged model it never answers with the exact tier.
+    // on the grid and 10,000 scenes off it. (Among every tier it is `Method::Auto` by
+    // construction: both call the same function.) Among the map and the averaged model it never
+    // answers with the exact tier.
     use contact_bounce::tiers::{AutoTiers, Tier};
     use contact_bounce::Tolerance;
     use host_tests::reference::{simulate, DEFAULT_BUDGET};
@@ -547,12 +548,6 @@ fn auto_keeps_its_promise_at_ten_one_and_a_tenth_of_a_percent() {
         for (k, tol) in [0.1, 0.01, 0.001].into_iter().enumerate() {
             let tolerance = Tolerance::new(tol).expect("valid");
             let auto = core.predict(Method::Auto(tolerance));
-            assert_eq!(
-                core.predict_auto_among::<{ AutoTiers::ALL }>(tolerance),
-                auto,
-                "{}",
-                scene.name
-            );
             let cheap =
                 core.predict_auto_among::<{ AutoTiers::MAP | AutoTiers::AVERAGED }>(tolerance);
             assert_ne!(cheap.tier, Tier::Exact, "{}", scene.name);
