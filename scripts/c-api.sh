@@ -9,6 +9,7 @@
 #    and the debouncer's lines, which must be the host's;
 #  - on the Arduino Uno: examples/c/uno.c, built with avr-gcc against the library built for
 #    avr-none (nightly), runs in simavr and must print the host's lean-path and debouncer lines.
+# Neither firmware may link panic code (the library and the core have no panicking path).
 # The header itself is checked current by `cargo test -p contact-bounce-c`.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -43,6 +44,14 @@ arm-none-eabi-gcc -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16 -Os
   -I"$C/include" -I"$C/examples/c" "$C/examples/c/cortex_m.c" -T "$C/examples/c/cortex_m.ld" \
   -Wl,--gc-sections target/thumbv7em-none-eabihf/firmware/libcontact_bounce_c.a -o "$tmp/cortex_m.elf"
 arm-none-eabi-size "$tmp/cortex_m.elf"
+# The C examples format nothing through Rust: panic code in them would be the library's.
+no_panic() {
+  if "$2" "$1" | grep -q 'core9panicking'; then
+    echo "FAIL: $1 links a panic path (core::panicking): the library must have none" >&2
+    exit 1
+  fi
+}
+no_panic "$tmp/cortex_m.elf" arm-none-eabi-nm
 timeout 300 qemu-system-arm -cpu cortex-m4 -machine mps2-an386 -nographic \
   -semihosting-config enable=on,target=native -kernel "$tmp/cortex_m.elf" > "$tmp/cortex_m"
 if ! diff -u "$tmp/rust" "$tmp/cortex_m"; then
@@ -66,6 +75,7 @@ uno() {
 }
 uno -o "$tmp/uno.elf"
 avr-size "$tmp/uno.elf"
+no_panic "$tmp/uno.elf" avr-nm
 timeout 300 simavr -m atmega328p -f 16000000 "$tmp/uno.elf" > "$tmp/raw" 2>&1 || true
 sed -e 's/\x1b\[[0-9;]*m//g' "$tmp/raw" | grep -v -e '^Loaded ' -e '^$' | sed -e 's/\.$//' > "$tmp/uno"
 { grep -E ' tb1v | restitution-averaged | closed-preload |^pin ' "$tmp/rust"; echo done; } > "$tmp/want"

@@ -3,8 +3,9 @@
 # avr-size), instructions per tier on Cortex-M (QEMU's instruction trace between calls of
 # `cost_mark` in examples/cost.rs), exact cycles on the Arduino Uno (libsimavr, the same
 # markers in examples/uno_cost.rs), and the debouncers' per-sample cost against debouncr's.
-# Fails if ours costs more per sample than debouncr's on any target, or if the learner's idle
-# path (no edge in progress) costs more than twice ours (deterministic counts).
+# Fails if ours costs more per sample than debouncr's on any target, if the learner's idle
+# path (no edge in progress) costs more than twice ours (deterministic counts), or if a tier's
+# firmware links any panic code (core::panicking: the crate has no panicking path).
 #
 # Usage: scripts/cost-report.sh [--write]   (--write saves docs/cost-report.md)
 set -euo pipefail
@@ -249,6 +250,12 @@ extra = sorted(((s, n) for n, s in code(sys.argv[1]).items() if n not in empty),
 print(", ".join(f"`{n}` {s}" for s, n in extra[:4]).replace("|", "\\|"))
 PY
 }
+no_panic() { # elf nm: a tier's firmware formats nothing, so any panic code it links is the crate's
+  if "$2" "$1" | grep -q 'core9panicking'; then
+    echo "FAIL: $1 links a panic path (core::panicking): the crate must have none" >&2
+    failed=1
+  fi
+}
 marks_qemu() { # elf target -> one count per interval between marks
   local mark
   mark=$("$llvm_bin/llvm-nm" "$1" | awk '$3 == "cost_mark" { print $1 }')
@@ -295,6 +302,7 @@ for features in "" micromath; do
     [ "$target" = thumbv7em-none-eabihf ] && sed -i "s/EMPTY7/$empty/" "$out"
     for tier in "${tiers[@]}"; do
       elf="target/$target/firmware/examples/tier_$tier"
+      no_panic "$elf" "$llvm_bin/llvm-nm"
       read -r text data bss _ < <("$llvm_bin/llvm-size" "$elf" | tail -n 1)
       mapfile -t c < <(marks_qemu "$elf" "$target")
       name=${tier//_/-}${features:+ ($features)}
@@ -324,6 +332,7 @@ if [ "$uno" = 1 ]; then
       heavy["avr-atmega328p $name"]="(linked for the ATmega2560) $(largest "target/avr-large/avr-none/firmware/examples/tier_$tier.elf" target/avr-large/avr-none/firmware/examples/tier_empty.elf avr-nm)"
     else
       elf="target/avr-none/firmware/examples/tier_$tier.elf"
+      no_panic "$elf" avr-nm
       read -r text data bss _ < <(avr-size "$elf" | tail -n 1)
       mark=$(avr-nm "$elf" | awk '$3 == "cost_mark" { print $1 }')
       mapfile -t c < <("$tmp/simavr-cycles" "$elf" "$mark" | grep -E '^[0-9]+$' | awk 'NR > 1 { print $1 - prev } { prev = $1 }')

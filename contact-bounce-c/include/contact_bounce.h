@@ -319,7 +319,7 @@ cb_error cb_predict_auto(const struct cb_switch *sw, float tolerance, struct cb_
 // As `cb_predict_auto`, weighing only the exact tier after the closed forms: the closed forms
 // where they meet `tolerance`, else the exact tier (which does on every one-body switch). No
 // map and no averaged quadrature are linked (beyond the exact tier's rest past its cap):
-// in Rust firmware 4.2-4.5 KB less than Auto among every tier on Cortex-M and 9.75 KB less on the
+// in Rust firmware 4.2-4.5 KB less than Auto among every tier on Cortex-M and 9.8 KB less on the
 // Uno (`docs/cost-report.md`, auto-exact).
 cb_error cb_predict_auto_exact(const struct cb_switch *sw,
                                float tolerance,
