@@ -368,7 +368,7 @@ impl<'a, F: Float, D: Dissipation<F>, S: OffsetSign> Averaged<'a, F, D, S> {
                 // finite time and count used to be dropped, and the end taken from the
                 // threshold on; no input is known to reach that, but nothing rules it out).
                 Some((Time::At(t), n, _)) => (
-                    t_rest.seconds().map_or(Time::Never, |tr| Time::At(t + tr)),
+                    t_rest.after(t),
                     // (A count beyond the float's range is infinite: flagged by the caller.)
                     n_rest.value().map_or(Count::Infinite, |nr| {
                         Count::Finite(n.value().unwrap_or(F::MAX * F::TWO) + nr + F::ONE)
@@ -376,24 +376,13 @@ impl<'a, F: Float, D: Dissipation<F>, S: OffsetSign> Averaged<'a, F, D, S> {
                     cap,
                 ),
                 Some(_) => (Time::Never, Count::Infinite, cap),
-                None => (
-                    t_rest,
-                    n_rest
-                        .value()
-                        .map_or(Count::Infinite, |n| Count::Finite(n + F::ONE)),
-                    cap,
-                ),
+                None => (t_rest, n_rest.after(F::ONE), cap),
             }
         } else {
             (Time::Never, Count::Infinite, false)
         };
         let (last_above_time, impacts_above, cap_above) = match threshold_part {
-            Some((t, n, cap)) => (
-                t,
-                n.value()
-                    .map_or(Count::Infinite, |n| Count::Finite(n + F::ONE)),
-                cap,
-            ),
+            Some((t, n, cap)) => (t, n.after(F::ONE), cap),
             None => (end_time, impacts_total, false),
         };
         let approximations = if cap_end || cap_above {

@@ -449,7 +449,9 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign, const FULL: bo
     };
     let count_to = |low: F| {
         if FULL {
-            add_one(asymptote.fall_count::<S>(scene.orbit(), start, low))
+            asymptote
+                .fall_count::<S>(scene.orbit(), start, low)
+                .after(F::ONE)
         } else {
             Count::Infinite
         }
@@ -478,37 +480,6 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign, const FULL: bo
             None
         },
     )
-}
-
-fn add_one<F: Float>(count: Count<F>) -> Count<F> {
-    match count {
-        Count::Finite(n) => Count::Finite(n + F::ONE),
-        Count::Infinite => Count::Infinite,
-    }
-}
-
-impl<F: Float> Time<F> {
-    /// The earlier of two times.
-    pub(crate) fn min_with(self, other: Self) -> Self {
-        match (self, other) {
-            (Self::At(a), Self::At(b)) => Self::At(a.min(b)),
-            (Self::At(a), Self::Never) | (Self::Never, Self::At(a)) => Self::At(a),
-            (Self::Never, Self::Never) => Self::Never,
-        }
-    }
-}
-
-impl<F: Float> Count<F> {
-    /// The smaller of two counts.
-    pub(crate) fn min_with(self, other: Self) -> Self {
-        match (self, other) {
-            (Self::Finite(a), Self::Finite(b)) => Self::Finite(a.min(b)),
-            (Self::Finite(a), Self::Infinite) | (Self::Infinite, Self::Finite(a)) => {
-                Self::Finite(a)
-            }
-            (Self::Infinite, Self::Infinite) => Self::Infinite,
-        }
-    }
 }
 
 /// Exact discrete impacts: zeta = 0 (any Delta; impulses x R per impact) or Delta = 0 with

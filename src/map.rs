@@ -397,29 +397,14 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign, const FULL: bo
             if still_above {
                 if let Some(j_end) = scene.threshold_generating() {
                     let (dt, dn) = rest(j_end);
-                    rest_above = Some((
-                        match dt {
-                            Time::At(dt) => Time::At(t + dt),
-                            // Beyond what the float can tell: out of range (flagged below).
-                            Time::Never => Time::At(F::MAX * F::TWO),
-                        },
-                        match dn {
-                            Count::Finite(dn) => Count::Finite(n + dn),
-                            // More than the float counts: out of range (flagged by the caller).
-                            Count::Infinite => Count::Finite(F::MAX * F::TWO),
-                        },
-                    ));
+                    rest_above = Some((dt.reached_after(t), dn.reached_after(n)));
                 }
             }
             if endless {
                 (Time::Never, Count::Infinite)
             } else {
                 let (dt, dn) = rest(F::ZERO);
-                (
-                    dt.seconds().map_or(Time::Never, |dt| Time::At(t + dt)),
-                    dn.value()
-                        .map_or(Count::Infinite, |dn| Count::Finite(n + dn)),
-                )
+                (dt.after(t), dn.after(n))
             }
         }
     };

@@ -961,16 +961,8 @@ fn solve<F: Float, D: Dissipation<F>, M: Flights<F> + Copy, S: OffsetSign, const
                     // solved as the last above, with no error for the rest (f32, a kernel's
                     // slow decay: 160 s with a 1 % figure, where the rest takes 6e27 s).
                     let (dt, dn, _) = averaged.fall(j, j_end);
-                    last_above_time = match dt {
-                        Time::At(dt) => Time::At(elapsed + dt),
-                        // Beyond what the float can tell: out of range (flagged by the caller).
-                        Time::Never => Time::At(F::MAX * F::TWO),
-                    };
-                    impacts_above = match dn {
-                        Count::Finite(dn) => Count::Finite(count + dn),
-                        // More than the float counts: out of range (flagged by the caller).
-                        Count::Infinite => Count::Finite(F::MAX * F::TWO),
-                    };
+                    last_above_time = dt.reached_after(elapsed);
+                    impacts_above = dn.reached_after(count);
                     rest_error = dt.seconds().map_or(F::MAX, figure);
                 }
             }
@@ -979,12 +971,7 @@ fn solve<F: Float, D: Dissipation<F>, M: Flights<F> + Copy, S: OffsetSign, const
             } else {
                 let (dt, dn, _) = averaged.fall(j, F::ZERO);
                 rest_error = dt.seconds().map_or(F::MAX, figure);
-                (
-                    dt.seconds()
-                        .map_or(Time::Never, |dt| Time::At(elapsed + dt)),
-                    dn.value()
-                        .map_or(Count::Infinite, |dn| Count::Finite(count + dn)),
-                )
+                (dt.after(elapsed), dn.after(count))
             }
         }
     };
