@@ -10,7 +10,11 @@
 #  - on the Arduino Uno: examples/c/uno.c, built with avr-gcc against the library built for
 #    avr-none (nightly), runs in simavr and must print the host's lean-path and debouncer lines.
 # Neither firmware may link panic code (the library and the core have no panicking path).
+# It also measures what fits the Uno from C: each entry point alone in a minimal program, linked
+# as uno.c is (`--write` saves that table to docs/c-api-uno.md).
 # The header itself is checked current by `cargo test -p contact-bounce-c`.
+#
+# Usage: scripts/c-api.sh [--write]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 C=contact-bounce-c
@@ -67,13 +71,15 @@ cargo +nightly build --quiet --profile firmware -p contact-bounce-c --target avr
 # As .cargo/config.toml does for Rust firmware: avr-libc's single-precision routines, square
 # root and memory copies, marked undefined before -lm and -lc, are taken instead of the
 # library's generic ones.
-uno() {
+uno() { # source, then avr-gcc's other arguments
+  local source=$1
+  shift
   avr-gcc -mmcu=atmega328p -Os -std=gnu99 -Wall -Wextra -Werror -ffunction-sections -fdata-sections \
-    -I"$C/include" -I"$C/examples/c" "$C/examples/c/uno.c" -Wl,--gc-sections \
+    -I"$C/include" -I"$C/examples/c" "$source" -Wl,--gc-sections \
     -Wl,-u,__addsf3,-u,__subsf3,-u,__mulsf3,-u,__divsf3,-u,__eqsf2,-u,__nesf2,-u,__ltsf2,-u,__lesf2,-u,__gtsf2,-u,__gesf2,-u,__unordsf2,-u,__floatsisf,-u,__floatunsisf,-u,__fixsfsi,-u,__fixunssfsi,-u,sqrtf,-u,memcpy,-u,memmove,-u,memset \
     -lm -lc target/avr-none/firmware/libcontact_bounce_c.a -lm "$@"
 }
-uno -o "$tmp/uno.elf"
+uno "$C/examples/c/uno.c" -o "$tmp/uno.elf"
 avr-size "$tmp/uno.elf"
 no_panic "$tmp/uno.elf" avr-nm
 timeout 300 simavr -m atmega328p -f 16000000 "$tmp/uno.elf" > "$tmp/raw" 2>&1 || true
@@ -84,6 +90,94 @@ if ! diff -u "$tmp/want" "$tmp/uno"; then
   exit 1
 fi
 echo "ok: the C API on the Uno in simavr ($(wc -l < "$tmp/want") lines, as on the host)"
+
+# What fits the Uno from C: each entry point alone in a minimal program (its inputs read from
+# volatiles, so nothing is folded away; its outputs stored to them), linked as uno.c is. The
+# library's share is the program's flash (text and initialised data) minus that of the same
+# program with no call. RAM is the data and bss before any stack.
+calls=(
+  "\`cb_preload_bounce_seconds\`|out_e = cb_preload_bounce_seconds(in[0], in[1], in[2], in[3], in[4], in[5], &s); out_f = s;"
+  "\`cb_preload_bounce_time\`|out_e = cb_preload_bounce_time(in[0], in[1], in[2], in[3], in[4], in[5], &est); out_f = est.time + est.expected_error;"
+  "\`cb_preload_restitution_seconds\`|out_e = cb_preload_restitution_seconds(in[0], in[1], in[2], in[3], in[4], &s); out_f = s;"
+  "\`cb_switch_check\`|out_e = cb_switch_check(&sw);"
+  "\`cb_preload_seconds_closed\`|out_e = cb_preload_seconds_closed(&sw, &s); out_f = s;"
+  "\`cb_preload_seconds_averaged\`|out_e = cb_preload_seconds_averaged(&sw, &s); out_f = s;"
+  "\`cb_preload_seconds_map\`|out_e = cb_preload_seconds_map(&sw, &s); out_f = s;"
+  "\`cb_preload_seconds_exact\`|out_e = cb_preload_seconds_exact(&sw, &s); out_f = s;"
+  "\`cb_bounce_seconds_closed\`|out_e = cb_bounce_seconds_closed(&sw, &s); out_f = s;"
+  "\`cb_bounce_seconds_exact\`|out_e = cb_bounce_seconds_exact(&sw, &s); out_f = s;"
+  "\`cb_predict_closed\`|out_e = cb_predict_closed(&sw, &p); out_f = p.end_time;"
+  "\`cb_predict_averaged\`|out_e = cb_predict_averaged(&sw, &p); out_f = p.end_time;"
+  "\`cb_predict_map\`|out_e = cb_predict_map(&sw, &p); out_f = p.end_time;"
+  "\`cb_predict_exact\`|out_e = cb_predict_exact(&sw, &p); out_f = p.end_time;"
+  "\`cb_predict_auto_exact\`|out_e = cb_predict_auto_exact(&sw, in[0], &p); out_f = p.end_time;"
+  "\`cb_predict_auto\`|out_e = cb_predict_auto(&sw, in[0], &p); out_f = p.end_time;"
+  "the debouncer (\`cb_windows_init\`, \`cb_pin_init\`, \`cb_pin_update\`)|out_e = cb_windows_init(&w, (uint32_t)in[0], (uint32_t)in[1], CB_MODE_CONFIRM); out_e += cb_pin_init(&pin, in[2] > 0.0f); out_e += cb_pin_update(&pin, in[3] > 0.0f, &w);"
+)
+one() { # C statements -> text data bss of the minimal program around them
+  cat > "$tmp/one.c" <<C_PROGRAM
+#include <stdint.h>
+#include "contact_bounce.h"
+volatile float in[7];
+volatile float out_f;
+volatile uint16_t out_e;
+int main(void) {
+    cb_switch sw = {in[0], in[1], in[2], in[3], in[4], in[5], in[6]};
+    float s = 0.0f;
+    cb_prediction p;
+    cb_estimate est;
+    cb_windows w;
+    cb_pin pin;
+    (void)sw; (void)s; (void)p; (void)est; (void)w; (void)pin;
+    $1
+    for (;;) {
+    }
+}
+C_PROGRAM
+  # (--noinhibit-exec: a program that does not fit is linked all the same, to be measured.)
+  uno "$tmp/one.c" -Wl,--noinhibit-exec -o "$tmp/one.elf" 2> /dev/null || true
+  avr-size "$tmp/one.elf" | tail -n 1 | awk '{ print $1, $2, $3 }'
+}
+read -r empty_text empty_data _ < <(one "")
+empty=$((empty_text + empty_data))
+fits="$tmp/fits.md"
+{
+  echo "| entry point | library's flash (B) | program's flash (B) | RAM before the stack (B) | fits the Uno |"
+  echo "|---|---:|---:|---:|---|"
+} > "$fits"
+for entry in "${calls[@]}"; do
+  read -r text data bss < <(one "${entry#*|}")
+  flash=$((text + data))
+  ram=$((data + bss))
+  verdict=yes
+  if [ "$flash" -gt 32768 ]; then
+    verdict="no: $((flash - 32768)) B over"
+  elif [ "$ram" -gt 1536 ]; then
+    verdict="no: RAM (more than 1.5 KB before the stack)"
+  fi
+  echo "| ${entry%%|*} | $((flash - empty)) | $flash | $ram | $verdict |" >> "$fits"
+done
+cat "$fits"
+if [ "${1:-}" = "--write" ]; then
+  {
+    echo "# What fits the Arduino Uno from C"
+    echo
+    echo "Generated by \`scripts/c-api.sh --write\` ($(rustc +nightly --version | cut -d' ' -f1-2) for avr-none,"
+    echo "$(avr-gcc --version | head -n 1)). Each entry point of \`contact-bounce-c\` alone in a minimal C"
+    echo "program for the ATmega328P (its inputs read from volatiles, its outputs stored to them), linked as"
+    echo "\`scripts/c-api.sh\` links \`contact-bounce-c/examples/c/uno.c\`: avr-libc's float routines first, \`-Wl,--gc-sections\`."
+    echo "The library's flash is the program's (code and initialised data) minus that of the same program"
+    echo "with no call ($empty bytes). The Uno has 32,768 bytes of flash and 2,048 of RAM; a program that"
+    echo "leaves less than 512 bytes of RAM for its stack and the application is counted as not fitting."
+    echo
+    cat "$fits"
+    echo
+    echo "A \`cb_switch\` may be a gap or a preload, with or without damping, so every entry point that"
+    echo "takes one links both sides' code and the undamped sums; the \`cb_preload_*\` ones link no gap's"
+    echo "code. From Rust, a scene typed by its sign and its damping (\`Scene<f32, Viscous<f32>, Preload>\`)"
+    echo "links less: \`docs/cost-report.md\` has each tier's firmware on the Uno that way."
+  } > docs/c-api-uno.md
+fi
 
 # The Arduino library layout, and its example sketch compiled as the Arduino build does.
 scripts/arduino-library.sh "$tmp/arduino/ContactBounce"

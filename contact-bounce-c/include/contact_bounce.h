@@ -341,8 +341,8 @@ cb_error cb_bounce_seconds_exact(const struct cb_switch *sw, float *seconds);
 
 // The bounce time of a preloaded switch (`offset` < 0) by the closed forms: as
 // `cb_bounce_seconds_closed`, but a gap or an offset of 0 is `CB_PARAM_OFFSET` /
-// `CB_ERR_OUT_OF_RANGE`, and no gap's code is linked (on the Uno a tier through this API fits
-// only this way).
+// `CB_ERR_OUT_OF_RANGE`, and no gap's code is linked (on the Uno the closed, averaged and map
+// tiers fit from C only this way, and the exact tier not even so: `docs/c-api-uno.md`).
 cb_error cb_preload_seconds_closed(const struct cb_switch *sw, float *seconds);
 
 // The bounce time of a preloaded switch by the averaged model, as `cb_preload_seconds_closed`.
@@ -373,7 +373,8 @@ cb_error cb_seconds_to_ticks(float seconds,
 
 // The lean path: a preloaded contact's bounce time `t_b1v` (restitution and viscous damping;
 // `damping_ratio` 0 gives `t_b1`) straight from its inputs, with no scene and no tier: the
-// smallest firmware (it fits the Uno where the tiers through this API do not). Expected error
+// smallest firmware (about 4 KB of the Uno's flash from C, a tier through this API 17 KB and
+// more: `docs/c-api-uno.md`). Expected error
 // within 2.5 % plus the arctangent linearisation for a small first impulse; the estimate says
 // when the inputs are beyond that. `preload_force` in N (> 0).
 cb_error cb_preload_bounce_time(float mass,
