@@ -135,7 +135,13 @@ int main(void) {
 }
 C_PROGRAM
   # (--noinhibit-exec: a program that does not fit is linked all the same, to be measured.)
-  uno "$tmp/one.c" -Wl,--noinhibit-exec -o "$tmp/one.elf" 2> /dev/null || true
+  rm -f "$tmp/one.elf"
+  uno "$tmp/one.c" -Wl,--noinhibit-exec -o "$tmp/one.elf" 2> "$tmp/one.log" || true
+  if [ ! -s "$tmp/one.elf" ]; then
+    echo "FAIL: the minimal Uno program around '$1' did not link:" >&2
+    tail -n 20 "$tmp/one.log" >&2
+    exit 1
+  fi
   avr-size "$tmp/one.elf" | tail -n 1 | awk '{ print $1, $2, $3 }'
 }
 read -r empty_text empty_data _ < <(one "")
