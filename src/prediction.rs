@@ -43,9 +43,9 @@ impl<F: Float> Time<F> {
         }
     }
 
-    /// As [`Time::after`], for a crossing the bounce reaches (the threshold's, in a regime that
-    /// ends): a rest longer than the float can tell is out of range, 2 MAX (infinite), which
-    /// the prediction's caller flags.
+    /// As [`Time::after`], for a crossing the bounce must reach (the threshold's, which every
+    /// impulse falls below): a rest longer than the float can tell is out of range, 2 MAX
+    /// (infinite), which the prediction's caller flags.
     pub(crate) fn reached_after(self, start: F) -> Self {
         match self {
             Self::At(t) => Self::At(start + t),
