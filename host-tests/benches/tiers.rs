@@ -142,8 +142,9 @@ fn penalty_end(s: &host_tests::reference::OneBody, beta: f64, t_max: f64) -> f64
 
 /// The penalty-contact RK4 peer (C) on the catalogue switches, tuned per switch: the contact
 /// stiffness ratio beta doubles from 10 until the end of the bounce is within 1 % of the exact
-/// reference there and at the next two doublings; the run at that beta is timed. The tuning (beta, error) goes to
-/// target/penalty-rk4.json for the trade report.
+/// reference there and at the next two doublings; the run at that beta is timed, alone (criterion)
+/// and paired with the exact tier ([`paired_ratio`]). The tuning (beta, error) and the paired
+/// ratio go to target/penalty-rk4.json for the trade report.
 fn penalty_peer(c: &mut Criterion) {
     use host_tests::reference::OneBody;
     let mut group = c.benchmark_group("catalogue penalty rk4 1%");
@@ -182,8 +183,9 @@ fn penalty_peer(c: &mut Criterion) {
             beta *= 2.0;
         }
         let Some((beta, error)) = tuned else { continue };
+        let paired = paired_ratio(&switch, &scene, beta, t_max);
         tuning.push(format!(
-            "{{\"name\": \"{}\", \"beta\": {beta}, \"error\": {error}}}",
+            "{{\"name\": \"{}\", \"beta\": {beta}, \"error\": {error}, \"paired\": {paired}}}",
             switch.name
         ));
         group.bench_with_input(BenchmarkId::from_parameter(switch.name), &scene, |b, s| {
@@ -195,6 +197,68 @@ fn penalty_peer(c: &mut Criterion) {
         "../target/penalty-rk4.json",
         format!("[{}]\n", tuning.join(", ")),
     );
+}
+
+/// Rounds of the paired timing ([`paired_ratio`]); 3 in criterion's test mode (`-- --test`).
+const PAIRED_ROUNDS: usize = 31;
+/// Time per timed block of one side of a round (s).
+const PAIRED_BLOCK: f64 = 2e-3;
+
+/// How many times the penalty peer's time the exact tier's is on `switch`, timed in pairs: each
+/// round times a block of exact predictions and then a block of penalty runs, and the median of
+/// the rounds' ratios is returned. The two criterion groups are timed minutes apart, and the
+/// ratio of their medians moves with the machine's speed in between (26.9 to 32.4 in the five
+/// trade reports before this was added); within a round both sides see the same machine.
+fn paired_ratio(
+    switch: &catalogue::Typical,
+    scene: &host_tests::reference::OneBody,
+    beta: f64,
+    t_max: f64,
+) -> f64 {
+    use std::time::Instant;
+    let core = switch.scene::<f64>().expect("valid");
+    let exact = Method::Exact {
+        max_impacts: EXACT_MAX_IMPACTS,
+    };
+    // Seconds a call of `f`, over `n` calls.
+    fn block(n: u32, mut f: impl FnMut()) -> f64 {
+        let start = Instant::now();
+        for _ in 0..n {
+            f();
+        }
+        start.elapsed().as_secs_f64() / f64::from(n)
+    }
+    let mut exact_call = || {
+        black_box(black_box(&core).predict(black_box(exact)));
+    };
+    let mut penalty_call = || {
+        black_box(penalty_end(black_box(scene), black_box(beta), t_max));
+    };
+    // Calls per block, from one block of a few calls each.
+    let calls = |seconds: f64| -> u32 {
+        let n = (PAIRED_BLOCK / seconds.max(1e-9)).ceil();
+        if n >= f64::from(u32::MAX) {
+            u32::MAX
+        } else {
+            (n as u32).max(1)
+        }
+    };
+    let n_exact = calls(block(100, &mut exact_call));
+    let n_penalty = calls(block(3, &mut penalty_call));
+    let rounds = if std::env::args().any(|a| a == "--test") {
+        3
+    } else {
+        PAIRED_ROUNDS
+    };
+    let mut ratios: Vec<f64> = (0..rounds)
+        .map(|_| {
+            let e = block(n_exact, &mut exact_call);
+            let p = block(n_penalty, &mut penalty_call);
+            p / e
+        })
+        .collect();
+    ratios.sort_by(f64::total_cmp);
+    ratios[ratios.len() / 2]
 }
 
 /// The eight catalogue switches (f64): the exact tier, and Auto at 1 %.
