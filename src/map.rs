@@ -21,7 +21,7 @@
 
 use crate::averaged::Averaged;
 use crate::exact::{Landing, Oscillator};
-use crate::mechanisms::Dissipation;
+use crate::mechanisms::{Asymptote, Dissipation};
 use crate::prediction::{Approximations, Count, Course, Prediction, Tier, Time};
 use crate::quadrature::{Compensated, Nodes};
 use crate::regime::Regime;
@@ -166,7 +166,9 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Iterator for MapImpacts<'_, F, 
         let stop = if scene.regime() == Regime::SingleImpact {
             Some(MapEnd::NoReturn)
         } else if preload
-            && j <= tail_cutoff(scene) * scene.omega() * scene.delta().abs()
+            && j <= Asymptote::<F>::tail_cutoff(scene.dissipation().dissipates())
+                * scene.omega()
+                * scene.delta().abs()
             && scene.threshold_generating().is_none_or(|end| j < end)
         {
             Some(MapEnd::ZenoTail(j))
@@ -207,19 +209,6 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Iterator for MapImpacts<'_, F, 
             time: self.time.value(),
             impulse: (F::ONE + restitution) * self.speed,
         })
-    }
-}
-
-/// Where a preload's Zeno tail is summed on the asymptote, relative to Omega |Delta|:
-/// [`Tuning::MAP_TAIL_CUTOFF`](crate::model::Tuning) where the scene dissipates between impacts,
-/// else (restitution alone, where the map is exact) [`Tuning::TAIL_CUTOFF`](crate::model::Tuning).
-/// (In f32 the two are one constant, and the test folds away.)
-#[inline]
-pub(crate) fn tail_cutoff<F: Float, D: Dissipation<F>, S: OffsetSign>(scene: &Scene<F, D, S>) -> F {
-    if F::MAP_TAIL_CUTOFF > F::TAIL_CUTOFF && scene.dissipation().dissipates() {
-        F::MAP_TAIL_CUTOFF
-    } else {
-        F::TAIL_CUTOFF
     }
 }
 

@@ -46,6 +46,19 @@ pub struct Asymptote<F> {
 }
 
 impl<F: Float> Asymptote<F> {
+    /// Where a tier leaves the small-impulse tail to the asymptote on the way to J = 0,
+    /// relative to Omega |Delta|: [`Tuning::DAMPED_TAIL_CUTOFF`](crate::model::Tuning) where
+    /// the scene `dissipates` between impacts, else [`Tuning::TAIL_CUTOFF`](crate::model::Tuning),
+    /// exact to rounding. (In f32 the two are one constant, and the test folds away.)
+    #[inline]
+    pub(crate) fn tail_cutoff(dissipates: bool) -> F {
+        if F::DAMPED_TAIL_CUTOFF > F::TAIL_CUTOFF && dissipates {
+            F::DAMPED_TAIL_CUTOFF
+        } else {
+            F::TAIL_CUTOFF
+        }
+    }
+
     /// No contribution.
     pub const fn zero() -> Self {
         Self {
