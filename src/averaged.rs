@@ -7,7 +7,7 @@
 //! dissipates between impacts, and below [`Tuning::TAIL_CUTOFF`](crate::model::Tuning::TAIL_CUTOFF)
 //! Omega |Delta| (exact to rounding) with restitution alone, the small-impulse asymptote of E1
 //! (docs/physics.md sec. 4) is integrated in closed form: its relative error there is O(cutoff),
-//! on a tail that is itself O(cutoff) of the total (with damping, 1e-9 to 1e-8 of the end on the
+//! on a tail that is itself O(cutoff) of the total (with damping, 8e-10 to 1e-8 of the end on the
 //! catalogue's switches, far below the tier's own error of 1 % and more).
 
 use crate::error::{non_negative, normal, Error, Parameter, Reason};

@@ -21,10 +21,10 @@ pub trait Tuning: Sealed + Sized + 'static {
     /// floats. The asymptote leaves out terms of relative size zeta J and J^2 (in units of
     /// Omega |Delta|) of that tail, a few 1e-4 of it at most there, a tenth of the map's
     /// smallest figure (0.3 %) and of the averaged tier's with damping (1 %); on the catalogue's
-    /// switches the averaged tier's end moves by 1e-9 to 1e-8 of itself. f64's
+    /// switches the averaged tier's end moves by 8e-10 to 1e-8 of itself. f64's
     /// [`TAIL_CUTOFF`](Tuning::TAIL_CUTOFF), exact to rounding, walked some 20 more impacts of
     /// the map (the catalogue's maps then took longer than the exact tier) and integrated 7
-    /// more units of ln J (14 panels) of the averaged tier (2.3 times its time on the tactile
+    /// more units of ln J (14 panels) of the averaged tier (2.4 times its time on the tactile
     /// dome) for nothing either tier's own error would show. A scene that loses nothing
     /// between impacts keeps `TAIL_CUTOFF`: its map is exact, and its averaged tier is the
     /// closed form of the restitution-only lean path.
