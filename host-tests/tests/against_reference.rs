@@ -511,11 +511,13 @@ fn kernels_keep_their_expected_error() {
             }
         }
     }
-    // 14 of the grid's figures remain: the averaged model's gap figure now needs a viscous
+    // 8 of the grid's figures remain: the averaged model's gap figure now needs a viscous
     // zeta of 1e-3 or more (its measured domain; below it a sweep of gaps found it off by up to
     // 5 times), and the kernel grid's gaps have no viscous damping (their damping is the
-    // kernel's; 25 were stated before).
-    assert!(stated >= 14, "{stated}");
+    // kernel's; 25 were stated before); and no tier that averages the kernel's force states a
+    // figure beyond Omega tau = 1 (the promise harness found the averaged tier up to 98 % short
+    // there), which takes the 6 of the grid's preloads at Omega tau = 10 (14 were stated).
+    assert!(stated >= 8, "{stated}");
     assert!(
         problems.is_empty(),
         "{} problems:\n{}",

@@ -237,6 +237,9 @@ impl<F: Float> Dissipation<F> for Hereditary<F> {
     fn kernel(&self) -> Option<(F, F)> {
         Some((self.kappa, self.tau))
     }
+    fn longest_relaxation(&self) -> F {
+        self.tau
+    }
     fn rate(&self, point: &OrbitPoint<F>) -> F {
         let two_pi2 = F::TWO * F::PI * F::PI;
         -two_pi2 * point.impulse() * self.harmonic_sum(point).value

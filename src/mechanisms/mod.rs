@@ -205,6 +205,11 @@ pub trait Dissipation<F: Float>: sealed::Sealed + Copy + Debug {
     fn kernel(&self) -> Option<(F, F)> {
         None
     }
+    /// The longest relaxation time of its kernels, tau (s; 0 without a kernel): how long the
+    /// kernel's force remembers the motion.
+    fn longest_relaxation(&self) -> F {
+        F::ZERO
+    }
 }
 
 /// No dissipation between impacts: restitution only.
@@ -264,6 +269,10 @@ impl<F: Float, A: Dissipation<F>> Dissipation<F> for Option<A> {
     fn kernel(&self) -> Option<(F, F)> {
         self.as_ref().and_then(Dissipation::kernel)
     }
+    fn longest_relaxation(&self) -> F {
+        self.as_ref()
+            .map_or(F::ZERO, Dissipation::longest_relaxation)
+    }
 }
 
 impl<A: sealed::Sealed, B: sealed::Sealed> sealed::Sealed for (A, B) {}
@@ -295,6 +304,14 @@ impl<F: Float, A: Dissipation<F>, B: Dissipation<F>> Dissipation<F> for (A, B) {
             None
         } else {
             self.0.kernel().or_else(|| self.1.kernel())
+        }
+    }
+    fn longest_relaxation(&self) -> F {
+        let (a, b) = (self.0.longest_relaxation(), self.1.longest_relaxation());
+        if a > b {
+            a
+        } else {
+            b
         }
     }
 }
