@@ -21,6 +21,7 @@
 
 use crate::averaged::Averaged;
 use crate::exact::{Landing, Oscillator};
+use crate::mechanisms::restitution::rebound;
 use crate::mechanisms::{Asymptote, Dissipation};
 use crate::prediction::{Approximations, Count, Course, Prediction, Tier, Time};
 use crate::quadrature::{Compensated, Nodes};
@@ -159,8 +160,7 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Iterator for MapImpacts<'_, F, 
         if self.end.is_some() {
             return None;
         }
-        // R v as v - r v: keeps the loss where R rounds to 1 (r < 6e-8 in f32).
-        let departure = self.speed - scene.loss() * self.speed;
+        let departure = rebound(self.speed, restitution, scene.loss());
         let j = F::TWO * departure;
         let preload = scene.is_preload();
         let stop = if scene.regime() == Regime::SingleImpact {

@@ -1292,3 +1292,82 @@ fn the_averaged_tier_states_no_figure_for_a_kernel_slower_than_the_oscillation()
         }
     }
 }
+
+#[test]
+fn a_small_restitution_rebounds_without_cancelling() {
+    // Found by the promise harness (FUZZ_SEED=20261128, f32): a preload with R = 4.9e-5. The
+    // departure R v was taken as v - (1 - R) v, which keeps 3 digits of it in f32: the map's
+    // first flight, and so its end, was 1.1e-3 off where it stated 1.0e-4. The exact tier solved
+    // its flights from the same difference (its undamped sums here did not).
+    fn contact<F: Float>(threshold: Threshold<F>) -> Contact<F> {
+        Contact {
+            frequency: Frequency::Omega(F::from_f64(22.562_272_857_370_49)),
+            offset: Offset::Delta(F::from_f64(-7.662_055_164_335_241e-2)),
+            restitution: Restitution::Coefficient(F::from_f64(4.872_777_858_644_372_6e-5)),
+            closing_speed: F::from_f64(450.450_078_567_944_5),
+            threshold,
+        }
+    }
+    fn methods<F: Float>() -> [Method<F>; 2] {
+        [
+            Method::Map {
+                max_impacts: 10_000,
+            },
+            Method::Exact {
+                max_impacts: 10_000,
+            },
+        ]
+    }
+    // f32 against f64's exact tier, within the f32 prediction's own figure.
+    let held = |p: &Prediction<f32>, truth: f64, what: &str| {
+        let (t, e) = (
+            p.end_time.seconds().map_or(f64::NAN, f64::from),
+            p.expected_error.map_or(f64::NAN, f64::from),
+        );
+        assert!(
+            (t / truth - 1.0).abs() <= e,
+            "{what}: {t:e} (error {e:e}) against {truth:e}"
+        );
+    };
+    // Restitution alone: the map (the exact tier's sums are the closed tier's).
+    let fraction = 0.020_050_818;
+    let wide = Scene::new(
+        contact(Threshold::FractionOfFirst(fraction)),
+        contact_bounce::Undamped,
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let narrow = Scene::new(
+        contact(Threshold::FractionOfFirst(fraction as f32)),
+        contact_bounce::Undamped,
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let truth = wide
+        .predict(methods()[1])
+        .end_time
+        .seconds()
+        .unwrap_or(f64::NAN);
+    held(&narrow.predict(methods()[0]), truth, "undamped map");
+    // With viscous damping: the map and the exact tier's solved flights.
+    let wide = Scene::new(
+        contact(Threshold::None),
+        Viscous::new(0.01).unwrap_or_else(|e| panic!("{e}")),
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let narrow = Scene::new(
+        contact(Threshold::None),
+        Viscous::new(0.01_f32).unwrap_or_else(|e| panic!("{e}")),
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let truth = wide
+        .predict(methods()[1])
+        .end_time
+        .seconds()
+        .unwrap_or(f64::NAN);
+    for method in methods::<f32>() {
+        held(
+            &narrow.predict(method),
+            truth,
+            &format!("damped {method:?}"),
+        );
+    }
+}

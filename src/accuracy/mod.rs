@@ -296,8 +296,11 @@ pub(crate) fn with_reduction<F: Float, D: Dissipation<F>, S: OffsetSign>(
     expected: Option<F>,
 ) -> Option<F> {
     let share = static_share(scene);
+    // (`has_kernel` first: a type without a kernel folds the test away.)
+    let dissipation = scene.dissipation();
     if share > c(LARGEST_STATIC_SHARE)
-        || scene.omega() * scene.dissipation().longest_relaxation() > c(LONGEST_KERNEL_MEMORY)
+        || (dissipation.has_kernel()
+            && scene.omega() * dissipation.longest_relaxation() > c(LONGEST_KERNEL_MEMORY))
     {
         return None;
     }

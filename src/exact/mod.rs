@@ -60,6 +60,7 @@ use crate::accuracy::{self, c};
 use crate::averaged::Averaged;
 use crate::closed;
 use crate::float::exp_and_m1;
+use crate::mechanisms::restitution::rebound;
 use crate::mechanisms::Dissipation;
 use crate::method::Walk;
 use crate::prediction::{Approximations, Count, Course, Prediction, Tier, Time};
@@ -525,7 +526,7 @@ pub(crate) fn ends_at_first_contact<F: Float, D: Dissipation<F>, S: OffsetSign>(
         return None;
     }
     let zeta = dissipation.damping_ratio();
-    let departure = scene.closing_speed() - scene.loss() * scene.closing_speed();
+    let departure = rebound(scene.closing_speed(), scene.restitution(), scene.loss());
     if surely_returns(scene.omega(), zeta, scene.delta(), departure) {
         return None;
     }
@@ -665,6 +666,8 @@ struct Damped<'a, F, S> {
     /// 1 / (Omega |Delta|) and 1 / Omega, on hosts: see [`Damped::series_guess`].
     #[cfg(not(target_os = "none"))]
     reciprocals: (F, F),
+    /// R.
+    restitution: F,
     /// 1 - R.
     loss: F,
     /// The last flight and the undamped flight of its departure.
@@ -771,8 +774,7 @@ impl<F: Float, S: OffsetSign> Flights<F> for Damped<'_, F, S> {
                 let (flight, speed) = series.exact_flight(eps)?;
                 steps += 1;
                 walked += flight;
-                // R v as v - r v.
-                eps = speed - self.loss * speed;
+                eps = rebound(speed, self.restitution, self.loss);
             }
         }
         if departure > F::TAIL_CUTOFF * self.scale {
@@ -821,6 +823,7 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign, const FULL: bo
         scale,
         #[cfg(not(target_os = "none"))]
         reciprocals: (F::ONE / scale, F::ONE / scene.omega()),
+        restitution: scene.restitution(),
         loss: scene.loss(),
         previous: None,
         series,
@@ -867,8 +870,7 @@ fn solve<F: Float, D: Dissipation<F>, M: Flights<F> + Copy, S: OffsetSign, const
     let mut last_return: Option<(M, F, F)> = None;
     let mut final_departure = F::ZERO;
     let stop = loop {
-        // R v as v - r v: keeps the loss where R rounds to 1.
-        let departure = speed - loss * speed;
+        let departure = rebound(speed, restitution, loss);
         if zeno && !(still_above && threshold.is_some()) {
             if let Some((tail, error)) = flights.tail(departure, time.value()) {
                 break Stop::Tail { time: tail, error };

@@ -21,6 +21,19 @@ pub fn restitution_rate<F: Float>(one_minus_r: F, point: &OrbitPoint<F>) -> F {
     -one_minus_r * point.impulse() / point.period()
 }
 
+/// The speed R v an impact leaves at `speed` (m/s), from R and 1 - R both: R v below R = 1/2,
+/// v - (1 - R) v above it, so that neither end cancels (in f32, v - (1 - R) v at R = 4.9e-5
+/// kept 3 digits of R v, and the map's first flight was 1e-3 off; R v at R within an epsilon
+/// of 1 loses the loss).
+#[inline]
+pub(crate) fn rebound<F: Float>(speed: F, restitution: F, loss: F) -> F {
+    if restitution < F::HALF {
+        restitution * speed
+    } else {
+        speed - loss * speed
+    }
+}
+
 /// Small-J asymptote of the restitution term (docs/physics.md sec. 4): preload r Omega^2 |Delta|,
 /// gap r Omega J / (2 pi), Delta = 0 exactly r Omega J / pi.
 pub(crate) fn restitution_asymptote<F: Float, S: OffsetSign>(
