@@ -164,6 +164,17 @@ const LARGEST_GAP_IMPULSE: f64 = 40.0;
 /// table's gaps start there).
 const SMALLEST_GAP_DAMPING: f64 = 1e-3;
 
+/// How far past the truth the averaged model may put a gap's end (s), where that was measured:
+/// up to 2.86 free periods on the reference (taken as 3, 2 pi / Omega each), with viscous damping
+/// of at least [`SMALLEST_GAP_DAMPING`]; `None` below it (the exact tier's averaged rest past a
+/// cap ended 9 free periods late at zeta = 3e-11, R = 1: the promise harness).
+pub(crate) fn gap_end_overshoot<F: Float, D: Dissipation<F>, S: OffsetSign>(
+    scene: &Scene<F, D, S>,
+) -> Option<F> {
+    (scene.dissipation().damping_ratio() >= c(SMALLEST_GAP_DAMPING))
+        .then(|| c::<F>(6.0) * F::PI / scene.omega())
+}
+
 /// The averaged tier's error on an undamped preload, read conservatively from the generated
 /// table (the next smaller R, the next larger j0); `None` outside R >= 0.05, j0 <= 100.
 fn zeno_undamped<F: Float>(restitution: F, j0: F) -> Option<F> {
