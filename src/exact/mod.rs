@@ -866,7 +866,7 @@ fn solve<F: Float, D: Dissipation<F>, M: Flights<F> + Copy, S: OffsetSign, const
     // The model before the last flight that returned, its departure and its time: the
     // conditioning of a gap's last return is probed from there.
     // (Kept for a gap alone, where it is used: a copy of the model a flight otherwise.)
-    let gap = scene.regime() == Regime::LastImpact;
+    let gap = crate::sign::narrow::<S>(scene.regime()) == Regime::LastImpact;
     let mut last_return: Option<(M, F, F)> = None;
     let mut final_departure = F::ZERO;
     let stop = loop {
