@@ -368,22 +368,27 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
         // A scene that dissipates between impacts leaves its tail to the asymptote from higher
         // up: the map a preload's, the averaged tier any scene's on the way to J = 0
         // (`Asymptote::tail_cutoff`; in f32 the two cutoffs are one, and this folds away).
-        let ln_damped_floor = || {
-            if F::DAMPED_TAIL_CUTOFF > F::TAIL_CUTOFF && self.dissipation().dissipates() {
-                let damped = floor_at(F::DAMPED_TAIL_CUTOFF);
-                if damped > floor {
-                    return damped.ln();
-                }
+        let map_damped = use_map && self.is_preload();
+        let ln_damped_floor = if (map_damped || use_averaged)
+            && F::DAMPED_TAIL_CUTOFF > F::TAIL_CUTOFF
+            && self.dissipation().dissipates()
+        {
+            let damped = floor_at(F::DAMPED_TAIL_CUTOFF);
+            if damped > floor {
+                damped.ln()
+            } else {
+                ln_floor
             }
+        } else {
             ln_floor
         };
-        let ln_map_floor = if use_map && self.is_preload() {
-            ln_damped_floor()
+        let ln_map_floor = if map_damped {
+            ln_damped_floor
         } else {
             ln_floor
         };
         let averaged_cost = if use_averaged {
-            let (panels, _) = panel_count((walk.ln_start - ln_damped_floor()).max(F::ZERO));
+            let (panels, _) = panel_count((walk.ln_start - ln_damped_floor).max(F::ZERO));
             let per_evaluation = if self.dissipation().has_kernel() {
                 // With a kernel an E1 evaluation costs 5.2 times more (N8 on the dome: about
                 // 69,800 instructions with a kernel, 13,350 without, `docs/cost-report.md`).
