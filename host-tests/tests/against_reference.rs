@@ -599,11 +599,13 @@ fn auto_keeps_its_promise_at_ten_one_and_a_tenth_of_a_percent() {
 }
 
 #[test]
-fn the_exact_tier_solves_kernels_to_1e_9() {
+fn the_exact_tier_solves_kernels_to_1e_11() {
     // Method::Exact with a relaxation kernel (the core's modal flights) against the reference's
-    // matrix exponential, on the kernel grid: same count, end within 1e-9. The reference is the
+    // matrix exponential, on the kernel grid: same count, end within 1e-11. The reference is the
     // looser of the two here: on the 5,450-impact gap (R = 1, Omega tau = 10, kernel damping
-    // 0.01) it is 3e-10 from the 60-digit solution, the tier 2e-13
+    // 0.01) it is 1.1e-12 from the 60-digit solution, the tier 2e-13 (measured: the two differ
+    // by 1.0e-12 there, the grid's worst; 3.0e-10 before the reference's exponential was
+    // balanced, `Kernelled::propagator`); the bound is ten times the reference's own error
     // (`python3 scripts/exact_mp.py 1000 0 1e-3 1 3 1e-2 2e5`: 23.34548347425504, a few
     // minutes; shorter cases run in `the_exact_kernel_tier_keeps_its_expected_error_to_60_digits`).
     use contact_bounce::tiers::Tier;
@@ -621,7 +623,7 @@ fn the_exact_tier_solves_kernels_to_1e_9() {
         let truth = exact.end_time.expect("a finite end");
         let t = p.bounce_time().expect("a finite end");
         let error = (t / truth - 1.0).abs();
-        assert!(error < 1e-9, "{}: {t} vs {truth}", scene.name);
+        assert!(error < 1e-11, "{}: {t} vs {truth}", scene.name);
         match exact.impacts_total {
             Some(n) => assert_eq!(p.impacts_total.value(), Some(n as f64), "{}", scene.name),
             None => assert_eq!(p.impacts_total, contact_bounce::tiers::Count::Infinite),
@@ -820,7 +822,8 @@ fn auto_promises_on_every_kernel_scene_and_keeps_it() {
 #[test]
 fn the_exact_tier_solves_kernels_off_the_grid() {
     // 200 random kernel scenes (with and without viscous damping): the exact tier against the
-    // reference, same count and within 1e-9, and Auto's promises at 10 %, 1 % and 0.1 % kept.
+    // reference, same count and within 1e-11 (as on the grid; measured: 2.2e-13), and Auto's
+    // promises at 10 %, 1 % and 0.1 % kept.
     use contact_bounce::{tiers::Tier, Threshold, Tolerance};
     use host_tests::grid::kernel_off_grid;
     use host_tests::reference::hereditary::simulate as simulate_kernel;
@@ -845,7 +848,7 @@ fn the_exact_tier_solves_kernels_off_the_grid() {
         if p.tier == Tier::Exact {
             solved += 1;
             let error = off(p.bounce_time().expect("finite"));
-            assert!(error < 1e-9, "{}: {p:?} vs {truth}", scene.name);
+            assert!(error < 1e-11, "{}: {p:?} vs {truth}", scene.name);
             match exact.impacts_total {
                 Some(n) => assert_eq!(p.impacts_total.value(), Some(n as f64), "{}", scene.name),
                 None => assert_eq!(p.impacts_total, contact_bounce::tiers::Count::Infinite),
