@@ -11,7 +11,7 @@
 //! The next impact is searched by stepping 1/64 of the shortest period, watching both a sign
 //! change of g = x - Delta and a maximum of g reaching the stop (no grazing impact is missed),
 //! then Brent. For short times g(t)/t is summed as a Taylor series (each body's series about the
-//! impact), so tiny flights keep their digits.
+//! impact, in the faster body's scaled time), so tiny flights keep their digits.
 
 use super::brent::brent;
 use super::{Failure, Outcome, Regime, Sum};
@@ -114,57 +114,69 @@ struct Free<'a> {
     s: &'a TwoBodies,
     b: [Body; 2],
     state: [f64; 4],
-    /// Taylor coefficients of g(t) = x1 - x2 - Delta (c_0 = 0).
+    /// Taylor coefficients of g = x1 - x2 - Delta (c_0 = 0) in the scaled time u = `scale` t.
+    /// (In t itself they grow as the faster body's frequency to the k-th power: beyond f64's
+    /// range by the 60th term from a few 1e6 rad/s, where the series summed to NaN and a
+    /// preload's first return was lost: one impact, ending at 0.)
     g: [f64; TERMS],
+    /// The faster body's frequency (rad/s): the series' time scale.
+    scale: f64,
     shortest: f64,
 }
 
 impl<'a> Free<'a> {
     fn new(s: &'a TwoBodies, state: [f64; 4]) -> Self {
         let b = s.bodies();
+        let scale = b[0].w.max(b[1].w);
+        // Each body's x'' + 2 zeta w x' + w^2 x = 0 in u = scale t.
         let (mut a1, mut a2) = ([0.0; TERMS], [0.0; TERMS]);
-        series(
-            2.0 * b[0].zeta * b[0].w,
-            b[0].w * b[0].w,
-            state[0],
-            state[1],
-            &mut a1,
-        );
-        series(
-            2.0 * b[1].zeta * b[1].w,
-            b[1].w * b[1].w,
-            state[2],
-            state[3],
-            &mut a2,
-        );
+        for (body, (x, v), out) in [
+            (b[0], (state[0], state[1]), &mut a1),
+            (b[1], (state[2], state[3]), &mut a2),
+        ] {
+            let w = body.w / scale;
+            series(2.0 * body.zeta * w, w * w, x, v / scale, out);
+        }
         let mut g = [0.0; TERMS];
         for k in 0..TERMS {
             g[k] = a1[k] - a2[k];
         }
         g[0] = 0.0; // x1 - x2 = Delta exactly at the start
-        let shortest = 2.0 * std::f64::consts::PI / b[0].w.max(b[1].w);
+        let shortest = 2.0 * std::f64::consts::PI / scale;
         Self {
             s,
             b,
             state,
             g,
+            scale,
             shortest,
         }
+    }
+
+    /// g'(0), the departure's relative speed (m/s).
+    fn start_speed(&self) -> f64 {
+        self.g[1] * self.scale
+    }
+
+    /// g''(0) / 2 (m/s^2).
+    fn half_curvature(&self) -> f64 {
+        self.g[2] * self.scale * self.scale
     }
 
     /// (g(t)/t, g'(t)) for t > 0.
     fn eval(&self, t: f64) -> (f64, f64) {
         let wmax = self.b[0].w.max(self.b[1].w) * (1.0 + self.b[0].zeta.max(self.b[1].zeta));
         if wmax * t <= 1.0 {
-            let (mut over_t, mut slope, mut p) = (0.0, 0.0, 1.0);
+            let u = self.scale * t;
+            let (mut over_u, mut slope, mut p) = (0.0, 0.0, 1.0);
             for k in 1..TERMS {
                 #[allow(clippy::cast_precision_loss)]
                 let kf = k as f64;
-                over_t += self.g[k] * p;
+                over_u += self.g[k] * p;
                 slope += kf * self.g[k] * p;
-                p *= t;
+                p *= u;
             }
-            (over_t, slope)
+            (over_u * self.scale, slope * self.scale)
         } else {
             let (x1, v1) = evolve(self.b[0].w, self.b[0].zeta, self.state[0], self.state[1], t);
             let (x2, v2) = evolve(self.b[1].w, self.b[1].zeta, self.state[2], self.state[3], t);
@@ -199,7 +211,8 @@ impl<'a> Free<'a> {
     /// The next impact time after the start, or `None` if there is none.
     fn next_impact(&self, horizon_steps: u64) -> Result<Option<f64>, Failure> {
         let h = self.shortest / 64.0;
-        let (mut t_prev, mut prev): (f64, (f64, f64)) = (0.0, (self.g[1], self.g[1]));
+        let (mut t_prev, mut prev): (f64, (f64, f64)) =
+            (0.0, (self.start_speed(), self.start_speed()));
         for k in 1..=horizon_steps {
             #[allow(clippy::cast_precision_loss)]
             let t = k as f64 * h;
@@ -464,9 +477,9 @@ fn simulate_with_tail(
         state[3] += (1.0 + r) * m1 / big_m * u;
         let departure = r * u;
         let flight = Free::new(s, state);
-        if s.delta < 0.0 && r < 1.0 && departure < tail && flight.g[2] > 0.0 {
+        if s.delta < 0.0 && r < 1.0 && departure < tail && flight.half_curvature() > 0.0 {
             // Zeno: flights ~ a / g2 shrinking by R; sum them and stick.
-            let t_f = departure / flight.g[2];
+            let t_f = departure / flight.half_curvature();
             let t_stick = time.value() + t_f / (1.0 - r);
             ever_infinite = true;
             // The tail's impulses (1 + R) a R^k: those still at or above the threshold.
@@ -552,6 +565,40 @@ mod tests {
             x2: 0.0,
             v2: 0.0,
             threshold: None,
+        }
+    }
+
+    #[test]
+    fn a_fast_pair_keeps_its_first_return() {
+        // Both frequencies times s (stiffness s^2, damping s, closing speed s, lengths kept):
+        // the same motion in a time 1 / s. At s = 1e4 (the faster body at 1e7 rad/s, a MEMS
+        // contact's) the flight's Taylor coefficients in t overflowed, the series summed to NaN
+        // and the first return was lost: one impact, ending at 0 (`bounce-table` gave a 0-tick
+        // window). In the scaled time they are bounded: the ends agree to 3.7e-15 (measured).
+        let (m, c, d) = ([1e-3, 4e-3], [1000.0, 1000.0 * 4.0 / 9.0], [0.002, 0.001]);
+        let end_at = |s: f64| {
+            let out = simulate(
+                &pair(
+                    m,
+                    c.map(|x| x * s * s),
+                    d.map(|x| x * s),
+                    -1e-4,
+                    0.7,
+                    0.05 * s,
+                ),
+                DEFAULT_BUDGET,
+            )
+            .expect("solves");
+            assert_eq!(out.impacts_total, None, "s = {s}: a Zeno accumulation");
+            out.end_time.expect("ends") * s
+        };
+        let base = end_at(1.0);
+        for s in [1e-3, 1e2, 1e4, 1e6] {
+            let end = end_at(s);
+            assert!(
+                (end / base - 1.0).abs() < 1e-13,
+                "s = {s}: {end:e} vs {base:e}"
+            );
         }
     }
 
