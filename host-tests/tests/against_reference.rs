@@ -252,6 +252,58 @@ fn a_preload_with_a_tiny_first_impulse_is_resolved_and_exact() {
 }
 
 #[test]
+fn the_averaged_tier_keeps_its_threshold_figure_on_preloads_at_r_1() {
+    // A preload at R = 1 with viscous damping bounces without end: its bounce time is the last
+    // impact above a threshold. The averaged tier placed its continuous crossing as if every
+    // flight lasted pi / Omega and lost pi zeta (Delta = 0), where a preload's flights are
+    // shorter and shorten as the impulse falls (the promise harness found it 4.9 % off, 2.2 % +
+    // 2 % stated, at j0 = 317). On this grid of a few to tens of impacts above the threshold,
+    // j0 to 6e4, that broke 26 of its 207 figures, by up to 4.4 times; taken within the flight
+    // after the last impact above (up to 1 / m), none.
+    use host_tests::reference::{simulate, OneBody, DEFAULT_BUDGET};
+    let (mut held, mut problems) = (0, Vec::new());
+    for j0 in [0.5, 3.0, 6.8, 15.0, 28.0, 60.0, 208.0, 1000.0, 6e4] {
+        for zeta in [0.03, 0.06, 0.13, 0.19, 0.26] {
+            for fraction in [0.04, 0.2, 0.38, 0.43, 0.47] {
+                let v0 = j0 * 1000.0 * 1e-3 / 2.0;
+                let reference = OneBody {
+                    omega: 1000.0,
+                    delta: -1e-3,
+                    restitution: 1.0,
+                    zeta,
+                    closing_speed: v0,
+                    threshold: Some(fraction * 2.0 * v0),
+                };
+                let what = format!("j0 {j0} zeta {zeta} fraction {fraction}");
+                let truth = simulate(&reference, DEFAULT_BUDGET)
+                    .expect("reference")
+                    .last_above_time
+                    .expect("crosses");
+                let scene = GridScene::of(&what, "preload-R1", reference)
+                    .core()
+                    .expect("valid");
+                let p = scene.predict(Method::Averaged(Nodes::N8));
+                let (Some(t), Some(e)) = (p.bounce_time(), p.expected_error) else {
+                    continue;
+                };
+                held += 1;
+                let error = (t / truth - 1.0).abs();
+                if error > e {
+                    problems.push(format!("{what}: {error:.4} where {e:.4} is stated"));
+                }
+            }
+        }
+    }
+    assert!(
+        problems.is_empty(),
+        "{} of {held} broken:\n{}",
+        problems.len(),
+        problems.join("\n")
+    );
+    assert!(held >= 200, "{held}");
+}
+
+#[test]
 fn the_map_counts_a_bouncing_balls_impacts_exactly() {
     // Undamped preload with tiny flights (a bouncing ball: j0 ~ 1e-5): the map summed the
     // impacts above the threshold on the continuous asymptote once the impulse was small, and
