@@ -256,8 +256,8 @@ fn the_averaged_tier_keeps_its_threshold_figure_on_preloads_at_r_1() {
     // A preload at R = 1 with viscous damping bounces without end: its bounce time is the last
     // impact above a threshold. The averaged tier placed its continuous crossing as if every
     // flight lasted pi / Omega and lost pi zeta (Delta = 0), where a preload's flights are
-    // shorter and shorten as the impulse falls (the promise harness found it 4.9 % off, 2.2 % +
-    // 2 % stated, at j0 = 317). On this grid of a few to tens of impacts above the threshold,
+    // shorter and shorten as the impulse falls (the promise harness found it 4.9 % off where
+    // 4.6 % was stated, at j0 = 317). On this grid of a few to tens of impacts above the threshold,
     // j0 to 6e4, that broke 26 of its 207 figures, by up to 4.4 times; taken within the flight
     // after the last impact above (up to 1 / m), none.
     use host_tests::reference::{simulate, OneBody, DEFAULT_BUDGET};
@@ -657,7 +657,7 @@ fn the_exact_tier_solves_kernels_to_1e_11() {
     // looser of the two here: on the 5,450-impact gap (R = 1, Omega tau = 10, kernel damping
     // 0.01) it is 1.1e-12 from the 60-digit solution, the tier 2e-13 (measured: the two differ
     // by 1.0e-12 there, the grid's worst; 3.0e-10 before the reference's exponential was
-    // balanced, `Kernelled::propagator`); the bound is ten times the reference's own error
+    // balanced, `Kernelled::propagator`); the bound is about ten times the reference's own error
     // (`python3 scripts/exact_mp.py 1000 0 1e-3 1 3 1e-2 2e5`: 23.34548347425504, a few
     // minutes; shorter cases run in `the_exact_kernel_tier_keeps_its_expected_error_to_60_digits`).
     use contact_bounce::tiers::Tier;

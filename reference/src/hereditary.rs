@@ -106,7 +106,7 @@ impl Kernelled {
     /// and [`expm`] counts its squarings by the largest: at Omega = 5.5e7 a step of 1/64 of a
     /// period took 25 (none balanced), and the bounce time came out 5.2e-8 off the 60-digit
     /// solution of `scripts/exact_mp.py` (5.4e-14 balanced); on the 5,450-impact gap of
-    /// `the_exact_tier_solves_kernels_to_1e_9` 3.0e-10 off (1.1e-12 balanced).
+    /// `the_exact_tier_solves_kernels_to_1e_11` 3.0e-10 off (1.1e-12 balanced).
     fn propagator(&self, a: &Mat, t: f64) -> Mat {
         let d = [1.0, 1.0 / self.omega, 1.0];
         let mut balanced = *a;
