@@ -212,6 +212,23 @@ fn f32_follows_f64_over_the_grid() {
 /// from a contactor's milliseconds to a MEMS contact's nanoseconds.
 const TIME_SCALES: [f64; 3] = [1e-3, 1e3, 1e6];
 
+/// A reference's end of bounce (times s, from `end`) at each of [`TIME_SCALES`] against its end
+/// at s = 1: within 1e-12, else a problem named `name`.
+fn scaled_alike(
+    name: &str,
+    end: &dyn Fn(f64) -> Option<f64>,
+    compared: &mut usize,
+    problems: &mut Vec<String>,
+) {
+    let base = end(1.0);
+    for s in TIME_SCALES {
+        match (base, end(s)) {
+            (Some(a), Some(b)) if (a - b).abs() <= 1e-12 * a.abs().max(b.abs()) => *compared += 1,
+            (a, b) => problems.push(format!("{name} s {s:e}: {a:?} vs {b:?}")),
+        }
+    }
+}
+
 #[test]
 fn a_switch_scaled_in_time_bounces_in_scaled_time() {
     // Every frequency times s, lengths kept (closing speeds and thresholds times s; two bodies'
@@ -310,13 +327,7 @@ fn a_switch_scaled_in_time_bounces_in_scaled_time() {
                 .and_then(|o| o.end_time.or(o.last_above_time))
                 .map(|t| t * s)
         };
-        let base = end(1.0);
-        for s in TIME_SCALES {
-            match (base, end(s)) {
-                (Some(a), Some(b)) if close(a, b, 1e-12) => compared += 1,
-                (a, b) => problems.push(format!("{} s {s:e}: {a:?} vs {b:?}", g.name)),
-            }
-        }
+        scaled_alike(&g.name, &end, &mut compared, &mut problems);
     }
     for g in kernel_grid() {
         let k = g.reference;
@@ -335,13 +346,7 @@ fn a_switch_scaled_in_time_bounces_in_scaled_time() {
                 .and_then(|o| o.end_time.or(o.last_above_time))
                 .map(|t| t * s)
         };
-        let base = end(1.0);
-        for s in TIME_SCALES {
-            match (base, end(s)) {
-                (Some(a), Some(b)) if close(a, b, 1e-12) => compared += 1,
-                (a, b) => problems.push(format!("{} s {s:e}: {a:?} vs {b:?}", g.name)),
-            }
-        }
+        scaled_alike(&g.name, &end, &mut compared, &mut problems);
     }
     assert!(
         problems.is_empty(),
