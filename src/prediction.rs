@@ -227,6 +227,48 @@ impl Approximations {
     pub const fn is_empty(self) -> bool {
         self.0 == 0
     }
+    /// Each flag and its name, in bit order: the one table the names come from.
+    const NAMED: [(Self, &'static str); 5] = [
+        (Self::TWO_BODY_RAYLEIGH, "two_body_rayleigh"),
+        (Self::OUTSIDE_VALIDITY, "outside_validity"),
+        (Self::MAP_CONTINUED_AVERAGED, "map_continued_averaged"),
+        (Self::PANELS_CAPPED, "panels_capped"),
+        (Self::BEYOND_RANGE, "beyond_range"),
+    ];
+    /// The names of the flags set, in bit order: the constants' names in lower case
+    /// (`two_body_rayleigh`, `outside_validity`, ...). Nothing for [`Approximations::NONE`].
+    ///
+    /// ```
+    /// use contact_bounce::tiers::Approximations;
+    ///
+    /// let a = Approximations::OUTSIDE_VALIDITY.with(Approximations::TWO_BODY_RAYLEIGH);
+    /// let mut names = a.names();
+    /// assert_eq!(names.next(), Some("two_body_rayleigh"));
+    /// assert_eq!(names.next(), Some("outside_validity"));
+    /// assert_eq!(names.next(), None);
+    /// ```
+    pub fn names(self) -> impl Iterator<Item = &'static str> {
+        Self::NAMED
+            .into_iter()
+            .filter(move |(flag, _)| self.contains(*flag))
+            .map(|(_, name)| name)
+    }
+}
+
+/// The flags' names ([`Approximations::names`]) joined by `+`, or `none`.
+impl core::fmt::Display for Approximations {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        if self.is_empty() {
+            return f.write_str("none");
+        }
+        for (k, name) in self.names().enumerate() {
+            if k > 0 {
+                f.write_str("+")?;
+            }
+            f.write_str(name)?;
+        }
+        Ok(())
+    }
 }
 
 /// A bounce prediction, the same for every tier.
@@ -366,5 +408,35 @@ impl<F: Float> Prediction<F> {
     pub(crate) fn bounce_time_in_range(&self) -> Option<F> {
         let in_range = |t: Time<F>| t.seconds().filter(|s| s.is_finite() || s.is_nan());
         in_range(self.end_time).or_else(|| in_range(self.last_above_time))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Approximations;
+
+    #[test]
+    fn every_approximation_has_one_name_and_one_bit() {
+        let mut seen = 0u8;
+        for (flag, name) in Approximations::NAMED {
+            assert_eq!(flag.0.count_ones(), 1, "{name} is not one bit");
+            assert_eq!(seen & flag.0, 0, "{name}'s bit is named twice");
+            seen |= flag.0;
+            assert!(flag.names().eq([name]), "{name} does not name itself");
+            let others = Approximations(!flag.0 & seen);
+            assert!(others.names().all(|n| n != name));
+        }
+        // The table covers bits 0-4, the five constants above.
+        assert_eq!(seen, 0b1_1111);
+        assert_eq!(Approximations::NONE.names().count(), 0);
+    }
+
+    #[test]
+    fn approximations_display_as_their_names() {
+        extern crate std;
+        use std::string::ToString;
+        assert_eq!(Approximations::NONE.to_string(), "none");
+        let a = Approximations::BEYOND_RANGE.with(Approximations::TWO_BODY_RAYLEIGH);
+        assert_eq!(a.to_string(), "two_body_rayleigh+beyond_range");
     }
 }

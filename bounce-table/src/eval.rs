@@ -171,6 +171,7 @@ fn core_result<F: Float>(input: &SceneInput, options: &Options) -> Result<Value,
         "impacts_above": count(p.impacts_above, whole),
         "first_impacts": first,
         "approximate": approximate,
+        "approximations": p.approximations.names().collect::<Vec<_>>(),
         "tier": format!("{:?}", p.tier),
         // Expected errors are estimates (some stored as f32): four significant digits.
         "expected_error": expected.map(|e| significant(e, 4)),
@@ -266,6 +267,7 @@ fn exact_result(input: &SceneInput) -> Result<Value, FieldError> {
         "impacts_above": out.impacts_above,
         "first_impacts": out.first_impacts.iter().map(|(t, p)| json!([t, p])).collect::<Vec<_>>(),
         "approximate": false,
+        "approximations": [],
     }))
 }
 

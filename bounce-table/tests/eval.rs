@@ -134,6 +134,41 @@ fn a_value_f32_cannot_hold_is_named_as_such() {
 }
 
 #[test]
+fn a_result_without_a_figure_names_its_approximations() {
+    // A MEMS-like pair: the tiers reduce the two bodies to one at the Rayleigh frequency and
+    // end at the first burst (28 ns), where the bodies' exchange reopens the contacts for
+    // milliseconds in the exact reference. No tier states a figure there, and each says why.
+    let pair = r#"{"name": "pair", "gap": -1e-7, "restitution": 0.7, "closing_speed": 0.05, "two_body": {"m1": 1e-10, "c1": 1e4, "m2": 4e-10, "c2": 4.44e3}}"#;
+    let (exact, _) = eval(&["--method", "exact"], pair);
+    assert!(
+        exact[0]["end_time"].as_f64().unwrap() > 1e-4,
+        "{}",
+        exact[0]
+    );
+    assert_eq!(exact[0]["approximations"], serde_json::json!([]));
+    for method in ["closed", "averaged", "map", "auto"] {
+        let (rows, code) = eval(&["--method", method], pair);
+        assert_eq!(code, 0);
+        let row = &rows[0];
+        assert!(row["end_time"].as_f64().unwrap() < 1e-6, "{method}: {row}");
+        assert_eq!(row["expected_error"], Value::Null, "{method}");
+        assert_eq!(
+            row["approximations"],
+            serde_json::json!(["two_body_rayleigh", "outside_validity"]),
+            "{method}"
+        );
+    }
+    // A scene inside the stated validity lists nothing.
+    let (rows, _) = eval(&["--method", "averaged"], &catalogue());
+    let dome = rows
+        .iter()
+        .find(|r| r["name"] == "tactile dome")
+        .expect("dome");
+    assert!(dome["expected_error"].is_f64());
+    assert_eq!(dome["approximations"], serde_json::json!([]));
+}
+
+#[test]
 fn exact_and_map_list_their_first_impacts() {
     for method in ["exact", "map"] {
         let (rows, _) = eval(&["--method", method], &catalogue());
