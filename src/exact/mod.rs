@@ -376,6 +376,8 @@ impl<F: Float, S: OffsetSign> Oscillator<F, S> {
         let damping = F::TWO * self.zeta * self.omega;
         let w2 = self.omega * self.omega;
         let settled = F::TAIL_CUTOFF * c::<F>(0.1);
+        // The step in units of the departure speed: see below.
+        let per_speed = F::ONE / a;
         let mut t = guess;
         for _ in 0..HALLEY_STEPS {
             let (y, v) = self.eval(a, t);
@@ -383,19 +385,18 @@ impl<F: Float, S: OffsetSign> Oscillator<F, S> {
                 return None;
             }
             let acceleration = -damping * v - w2 * (y + self.delta);
-            // Halley's step y / v / (1 - y a / (2 v^2)); Newton's y / v where the correction
-            // would more than double it (y a >= v^2). Formed from ratios (y / v, a / v) and
-            // never from the products y v and v^2: at small lengths those fell below the
-            // float's normal range and lost their digits while the ratios kept them (f32, a
-            // preload of Delta = -9e-19 m at R = 1: steps settled on rounding, and the bounce
-            // ended 23 % early, stating 5 %).
-            let reciprocal = F::ONE / v;
-            let newton = y * reciprocal;
-            let bend = newton * acceleration * reciprocal;
-            let step = if bend < F::ONE {
-                newton / (F::ONE - bend * F::HALF)
+            // Halley's step y / v / (1 - y a / (2 v^2)) = 2 y v / (2 v^2 - y a), one division;
+            // Newton's y / v where the correction would more than double it (y a >= v^2).
+            // Formed from y, v and a over the departure speed, a time, a number near 1 and a
+            // rate, never from the plain products y v and v^2: at small lengths those fell below
+            // the float's normal range and lost their digits (f32, a preload of Delta = -9e-19 m
+            // at R = 1: steps settled on rounding, and the bounce ended 23 % early, stating 5 %).
+            let (ys, vs) = (y * per_speed, v * per_speed);
+            let (square, curvature) = (vs * vs, ys * (acceleration * per_speed));
+            let step = if square > curvature {
+                F::TWO * ys * vs / (F::TWO * square - curvature)
             } else {
-                newton
+                ys / vs
             };
             let next = t - step;
             if !(next > low && next < high) {
