@@ -147,42 +147,90 @@ impl Polled for LockOut {
     }
 }
 
-/// QMK's `asym_eager_defer_pk`: presses eager, releases deferred.
+/// QMK's `asym_eager_defer_pk`: presses eager, releases deferred, with QMK's one timer per key.
+///
+/// A change of the pin starts the key's timer if it is not running: a press is reported at
+/// once and locks the key out for the window; a release is reported when the timer runs out,
+/// and the timer is cancelled if the pin reads pressed again before. Only one timer runs per
+/// key, so a release during a press's lock-out cannot start its own until the lock-out has
+/// ended: the scan where it ends looks at the pin again (QMK: pressed at 0 ms, released at 1,
+/// the release is reported at 10, not at 6).
 #[derive(Debug, Clone)]
 pub struct QmkAsym {
     debounce: f64,
     cooked: bool,
     raw: bool,
-    changed_at: f64,
-    pressed_at: f64,
+    /// The running timer: when it started, and whether it times a press (else a release).
+    timer: Option<(f64, bool)>,
+}
+
+impl QmkAsym {
+    /// At `debounce` (s), settled released.
+    #[must_use]
+    pub fn new(debounce: f64) -> Self {
+        Self {
+            debounce,
+            cooked: false,
+            raw: false,
+            timer: None,
+        }
+    }
+
+    /// QMK's `transfer_matrix_values` for this key, at `now`.
+    fn transfer(&mut self, now: f64) -> Option<bool> {
+        match self.timer {
+            None if self.raw != self.cooked => {
+                self.timer = Some((now, self.raw));
+                if self.raw {
+                    self.cooked = true;
+                    return Some(true);
+                }
+                None
+            }
+            // The pin reads the reported state again during a release's timer: cancelled.
+            Some((_, false)) if self.raw == self.cooked => {
+                self.timer = None;
+                None
+            }
+            _ => None,
+        }
+    }
 }
 
 impl Polled for QmkAsym {
     fn reset(&mut self, closed: bool) {
-        (self.cooked, self.raw) = (closed, closed);
-        (self.changed_at, self.pressed_at) = (f64::NEG_INFINITY, f64::NEG_INFINITY);
+        (self.cooked, self.raw, self.timer) = (closed, closed, None);
     }
     fn sample(&mut self, now: f64, closed: bool) -> Option<bool> {
-        if closed != self.raw {
-            self.raw = closed;
-            self.changed_at = now;
+        let changed = closed != self.raw;
+        self.raw = closed;
+        let mut reported = None;
+        let mut look_again = false;
+        // The timer first (QMK's counters, counted in whole milliseconds of elapsed time).
+        if let Some((started, press)) = self.timer {
+            if passed(now, started, self.debounce) {
+                self.timer = None;
+                if press {
+                    look_again = true;
+                } else if self.cooked != self.raw {
+                    self.cooked = self.raw;
+                    reported = Some(self.raw);
+                }
+            }
         }
-        if !passed(now, self.pressed_at, self.debounce) || closed == self.cooked {
-            return None;
+        if changed || look_again {
+            if let Some(edge) = self.transfer(now) {
+                reported = Some(edge);
+            }
         }
-        if closed {
-            self.cooked = true;
-            self.pressed_at = now;
-            return Some(true);
-        }
-        passed(now, self.changed_at, self.debounce).then(|| {
-            self.cooked = false;
-            false
-        })
+        reported
     }
 }
 
-/// ZMK's integrator.
+/// ZMK's integrator: a counter per key, in milliseconds, up by the scan's elapsed time while the
+/// pin differs from the key's state and down while it agrees; the state flips at the scan that
+/// finds the counter already at the threshold (ZMK's `zmk_debounce_update`: the counter is
+/// compared before it is incremented).
 #[derive(Debug, Clone)]
 pub struct ZmkIntegrator {
     press: f64,
@@ -190,6 +238,20 @@ pub struct ZmkIntegrator {
     period: f64,
     pressed: bool,
     counter: f64,
+}
+
+impl ZmkIntegrator {
+    /// `press` and `release` thresholds (s) at scans `period` (s) apart, settled released.
+    #[must_use]
+    pub fn new(press: f64, release: f64, period: f64) -> Self {
+        Self {
+            press,
+            release,
+            period,
+            pressed: false,
+            counter: 0.0,
+        }
+    }
 }
 
 impl Polled for ZmkIntegrator {
@@ -206,8 +268,8 @@ impl Polled for ZmkIntegrator {
         } else {
             self.press
         };
-        // (milliseconds counted in whole scans: compare with half a scan of slack)
-        if self.counter < threshold - 0.5 * self.period {
+        // (the counter is a sum of whole periods: compared to rounding)
+        if !passed(self.counter, 0.0, threshold) {
             self.counter += self.period;
             return None;
         }
@@ -343,45 +405,65 @@ pub fn score(row: &mut Row, traces: &[Trace], period: f64) -> Score {
         latencies: Vec::new(),
     };
     for (i, trace) in traces.iter().enumerate() {
-        let edges: Vec<f64> = match &mut row.kernel {
-            Kernel::Polled(d) => {
-                d.reset(trace.closed_before);
-                let end = trace.last() + row.settle + 4.0 * period;
-                let mut edges = Vec::new();
-                let mut k = 0u64;
-                loop {
-                    #[allow(clippy::cast_precision_loss)]
-                    let now = (phase(i) + k as f64) * period;
-                    if now > end {
-                        break;
-                    }
-                    if d.sample(now, trace.closed_at(now)).is_some() {
-                        edges.push(now);
-                    }
-                    k += 1;
-                }
-                edges
-            }
-            Kernel::Interrupt(delay) => {
-                let mut reported = trace.closed_before;
-                let mut edges = Vec::new();
-                for (j, &c) in trace.changes.iter().enumerate() {
-                    let fires = c + *delay;
-                    if trace.changes.get(j + 1).is_some_and(|&next| next <= fires) {
-                        continue; // rescheduled by the next edge
-                    }
-                    let level = trace.closed_at(fires);
-                    if level != reported {
-                        reported = level;
-                        edges.push(fires);
-                    }
-                }
-                edges
-            }
-        };
+        let end = trace.last() + row.settle + 4.0 * period;
+        let edges: Vec<f64> = edges(&mut row.kernel, trace, phase(i), period, end)
+            .into_iter()
+            .map(|(t, _)| t)
+            .collect();
         s.tally(trace, &edges);
     }
     s
+}
+
+/// Runs `kernel` over `trace` from its settled state before it: a polled debouncer samples at
+/// `(phase + k) * period` up to `end` (s), an interrupt-driven one sees every change. Returns
+/// the reported edges: their times (s) and the new state (closed or not).
+pub fn edges(
+    kernel: &mut Kernel,
+    trace: &Trace,
+    phase: f64,
+    period: f64,
+    end: f64,
+) -> Vec<(f64, bool)> {
+    let mut edges = Vec::new();
+    match kernel {
+        Kernel::Polled(d) => {
+            d.reset(trace.closed_before);
+            // The contact at each sample, walking the changes once.
+            let (mut next, mut closed) = (0, trace.closed_before);
+            let mut k = 0u64;
+            loop {
+                #[allow(clippy::cast_precision_loss)]
+                let now = (phase + k as f64) * period;
+                if now > end {
+                    break;
+                }
+                while trace.changes.get(next).is_some_and(|&c| c <= now) {
+                    closed = !closed;
+                    next += 1;
+                }
+                if let Some(state) = d.sample(now, closed) {
+                    edges.push((now, state));
+                }
+                k += 1;
+            }
+        }
+        Kernel::Interrupt(delay) => {
+            let mut reported = trace.closed_before;
+            for (j, &c) in trace.changes.iter().enumerate() {
+                let fires = c + *delay;
+                if trace.changes.get(j + 1).is_some_and(|&next| next <= fires) {
+                    continue; // rescheduled by the next edge
+                }
+                let level = trace.closed_at(fires);
+                if level != reported {
+                    reported = level;
+                    edges.push((fires, level));
+                }
+            }
+        }
+    }
+    edges
 }
 
 impl Score {
@@ -433,24 +515,12 @@ pub fn peers(period: f64) -> Vec<Row> {
         polled(
             "qmk asym_eager_defer_pk",
             5e-3,
-            Box::new(QmkAsym {
-                debounce: 5e-3,
-                cooked: false,
-                raw: false,
-                changed_at: 0.0,
-                pressed_at: 0.0,
-            }),
+            Box::new(QmkAsym::new(5e-3)),
         ),
         polled(
             "zmk integrator",
             5e-3,
-            Box::new(ZmkIntegrator {
-                press: 5e-3,
-                release: 5e-3,
-                period,
-                pressed: false,
-                counter: 0.0,
-            }),
+            Box::new(ZmkIntegrator::new(5e-3, 5e-3, period)),
         ),
         polled(
             "bounce2 stable",
