@@ -172,22 +172,30 @@ if [ -f ../shared/data/bouncy-button-uno.jsonl ]; then
   plots=$(mktemp -d)
   cargo run --quiet --release -p bounce-table -- calibrate --plot "$plots/calibration" ../shared/data/bouncy-button-uno.jsonl > /dev/null
   cargo run --quiet --release -p bounce-table -- replay --switch-type push-button --plot "$plots/replay" ../shared/data/bouncy-button-uno.jsonl > /dev/null
+  cargo run --quiet --release -p bounce-table -- replay --taps --switch-type push-button --plot "$plots/replay" ../shared/data/bouncy-button-uno.jsonl > /dev/null
   diff -r "$plots/calibration" docs/calibration
   diff -r "$plots/replay" docs/replay
   rm -rf "$plots"
   python3 - "$replay" <<'PY'
 import sys
 doc = sys.argv[1]
-rows = [l for l in doc.splitlines() if l.startswith("| bbb") and l.endswith(("| yes |", "| NO |"))]
+shown = doc.split("## What the rows must show", 1)[-1].split("## Tapped like a key", 1)[0]
+rows = [l for l in shown.splitlines() if l.startswith("| bbb") and l.endswith(("| yes |", "| NO |"))]
 readme = open("README.md").read()
 missing = [r for r in rows if r not in readme]
 if missing or not rows:
     sys.exit("README.md: the replay table differs from scripts/replay-report.sh:\n" + "\n".join(missing))
 if any(r.endswith("| NO |") for r in rows):
     sys.exit("replay: a calibrated row has false edges or is slower than a clean peer:\n" + "\n".join(rows))
-learned = [l for l in doc.splitlines() if l.startswith("| x") and l.endswith(("| yes |", "| NO |"))]
-if len(learned) != 12 or any(r.endswith("| NO |") for r in learned):
-    sys.exit("replay: the learner has more false edges than a peer, or is slower than a clean one:\n" + "\n".join(learned))
+# The learner tapped like a key: per switch and regime, and from every prior and period swept.
+taps = doc.split("## Tapped like a key", 1)[-1].split("## The learner on isolated presses", 1)[0]
+learned = [l for l in taps.splitlines() if l.endswith(("| yes |", "| NO |"))]
+if len(learned) != 12 + 8 or any(r.endswith("| NO |") for r in learned):
+    sys.exit("replay --taps: the learner lost a tap, has a false edge on a clean switch, or another row has fewer missed taps and fewer false edges:\n" + "\n".join(learned))
+table = [l for l in taps.splitlines() if l.startswith(("| push button", "| typing", "| fast-taps", "| double-click", "| hold"))]
+missing = [r for r in table if r not in readme]
+if missing or len(table) != 5:
+    sys.exit("README.md: the tap table differs from scripts/replay-report.sh:\n" + "\n".join(missing))
 PY
 else
   echo "SKIPPED: no ../shared/data/bouncy-button-uno.jsonl on this machine (not part of the repository)"

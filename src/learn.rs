@@ -1,36 +1,43 @@
-//! A debouncer that learns its own switch: it reports each change at once (as
-//! [`Mode::HoldOff`](crate::Mode::HoldOff) does), watches the bounce that follows, and sets
-//! the next window from what it has seen, per key, in a few bytes and integer operations.
+//! A debouncer that learns its own switch and never loses a real press: it reports each change
+//! at once (as [`Mode::HoldOff`](crate::Mode::HoldOff) does), watches the bounce that follows,
+//! and sets the next window from what the switch has shown, per key, in a few bytes and integer
+//! operations.
 //!
-//! What it keeps per kind (press, release), in samples ([`Learned`]): how many events it has
-//! seen, how many bounced again after a quiet gap (a late burst), the longest bounce without
-//! and with a late burst. From that:
+//! Two time scales meet in a key: the contact's own bounce (microseconds to a few milliseconds
+//! of flights, and on some switches reversions of tens of milliseconds) and the hand's taps (no
+//! real tap is down or up for less than about 31 ms: 16 taps a second is the known record). The
+//! learner is told the fastest tap ([`LearnerPrior`], in samples) and keeps these rules:
 //!
-//! - The window starts at a prior, given by the caller in samples (for example the P99.9 of
-//!   the switch type's bounce, or a window from a capture), and keeps it for the first
-//!   [`WARM_UP`] events of a kind.
-//! - After that it tightens to 3/2 of the longest bounce seen (`m + (m - 1) / 2` samples for
-//!   `m` seen: at most 3/2 of the bounce plus one sample, whatever the sampling phase). A late
-//!   burst that lasts more than [`LATE_GAP`] times the longest plain burst is a different
-//!   mechanism (an actuator's rebound) whose scale one or two events cannot tell: once a kind
-//!   has shown one, the window stays at the prior until [`LATE_EVIDENCE`] late bursts have
-//!   been seen, and then covers the longest of them times 3/2.
-//! - It never goes below the longest bounce seen, and when a bounce outlasts the prior, the
-//!   window covers it times 3/2.
-//! - It widens at once: while the contact keeps changing, the event lasts until it has been
-//!   quiet for [`LATE_GAP`] times its first burst (at least [`LATE_GAP`] samples, and at least
-//!   the prior over [`LATE_GAP_PRIOR_SHARE`]) past the window; and when a bounce comes after
-//!   that (the edge it gives is false), the contact returns within that same quiet after the
-//!   false event's watch: the event before it is then counted as a late burst that lasted
-//!   until then (up to the prior: a quick double tap looks the same), which sends its kind's
-//!   window back to the prior until [`LATE_EVIDENCE`] are seen.
+//! - **A window is never longer than the fastest tap, and a change that lasts a tap is always
+//!   reported.** The first change of an edge is reported at once, and a real tap's next change
+//!   comes a tap later, after the window has ended. A change that begins inside a window is
+//!   reported when the window ends, or sooner once it has lasted a tap; that edge's own window
+//!   runs from its report, so a real tap right after it can be reported late (by at most what
+//!   the edge was), never lost, whatever the prior.
+//! - **Windows grow only from what a finger cannot do.** An excursion of the contact away from
+//!   the reported level that starts less than a tap after the edge and comes back in less than
+//!   a tap is the switch's own: the window of that edge's kind grows to cover it (to
+//!   3/2 of the time from the edge to its end, plus at most one sample, and at most a tap). An
+//!   edge whose new level lasted a tap or longer is a tap, whatever came before: it never makes
+//!   a window grow, so no train of real taps can, and 10,000 clean taps leave the windows at one
+//!   sample.
+//! - **Where the switch reverts for as long as a tap, it says so.** Each kind keeps the longest
+//!   of the switch's own reversions ([`Tail::reversion`]) and how many lasted at least half the
+//!   fastest tap ([`Tail::long_reversions`]): such a switch will also revert for longer, and
+//!   those reversions look like taps to any rule that sees only timing (they are reported, as a
+//!   tap of that length would be). [`Tail::reverts_like_a_tap`] tells the firmware.
 //!
-//! Every rule is in samples and ratios of samples: nothing depends on how long a sample is,
-//! so the same learner serves a reed (microseconds) and a contactor (a tenth of a second) at
-//! the sampling period each needs. A period change is [`Learned::rescale`]d. The prior's share
-//! in the late-burst gap keeps what counts as a late burst the same however finely one switch
-//! is sampled: without it, sampled every 10 us, the push button of `docs/replay.md` showed three
-//! late bursts by its 12th release (one at 1 ms), and the learner trusted them too early.
+//! The window starts at the prior (samples: for example the switch type's window, or one from
+//! a capture; at most a tap) and keeps it for the first [`WARM_UP`] events of a kind, widened at
+//! once if the switch shows more; after that it is 3/2 of the longest bounce seen (`m + (m - 1)
+//! / 2` samples for `m` seen, one sample for none).
+//!
+//! Every rule is in samples and in the fastest tap: nothing depends on how long a sample is, so
+//! the same learner serves a reed (microseconds) and a contactor (a tenth of a second) at the
+//! sampling period each needs, with the fastest tap in that period's samples
+//! ([`LearnerPrior::at_period`] takes the default, [`FASTEST_TAP_NS`]; a switch no hand
+//! operates takes the fastest change it must report). A period change is
+//! [`Learned::rescale`]d.
 
 use embedded_hal::digital::InputPin;
 
@@ -39,29 +46,115 @@ use crate::error::{Error, Parameter, Reason};
 
 /// Events of a kind before its window leaves the prior.
 pub const WARM_UP: u8 = 10;
-/// Late bursts of a kind before their scale is trusted.
-pub const LATE_EVIDENCE: u8 = 3;
-/// A quiet gap of at least this many times the first burst (and this many samples) before a
-/// change makes that change a late burst; the same quiet ends an event past its window.
-pub const LATE_GAP: u16 = 4;
-/// The late-burst gap is also at least the kind's prior window over this: a floor in the
-/// switch's own time scale (the prior carries it), so that what counts as a late burst does not
-/// depend on how finely the contact is sampled (for the hand-operated prior, 157 ms / 32 =
-/// 4.9 ms).
-pub const LATE_GAP_PRIOR_SHARE: u16 = 32;
 
-/// What the learner has seen of one kind, in samples.
+/// The fastest real tap (ns), down or up: 16 taps a second, the known record of a human hand,
+/// is 31 ms down and 31 ms up. `docs/human-timing.md` gives the sources.
+pub const FASTEST_TAP_NS: u32 = 31_000_000;
+
+/// What a learner starts from, in samples: the prior press and release windows and the
+/// fastest real tap.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct LearnerPrior {
+    press: u16,
+    release: u16,
+    fastest_tap: u16,
+}
+
+impl LearnerPrior {
+    /// Prior windows of `press` and `release` samples, and a fastest tap of `fastest_tap`
+    /// samples: a change that lasts that many samples is always reported.
+    ///
+    /// # Errors
+    /// [`Parameter::Time`] with [`Reason::NotPositive`] for a 0, and with
+    /// [`Reason::OutOfRange`] above [`Windows::MAX_TICKS`].
+    pub const fn new(press: u16, release: u16, fastest_tap: u16) -> Result<Self, Error> {
+        if press == 0 || release == 0 || fastest_tap == 0 {
+            return Err(Error::new(Parameter::Time, Reason::NotPositive));
+        }
+        if press > Windows::MAX_TICKS
+            || release > Windows::MAX_TICKS
+            || fastest_tap > Windows::MAX_TICKS
+        {
+            return Err(Error::new(Parameter::Time, Reason::OutOfRange));
+        }
+        Ok(Self {
+            press,
+            release,
+            fastest_tap,
+        })
+    }
+
+    /// Prior windows of `press` and `release` samples at a sampling period of `period_ns`
+    /// nanoseconds, with the default fastest tap ([`FASTEST_TAP_NS`]) in whole samples of that
+    /// period (rounded down: a tap of that length is seen for at least that many samples).
+    ///
+    /// ```
+    /// use contact_bounce::LearnerPrior;
+    /// let prior = LearnerPrior::at_period(157, 157, 1_000_000)?; // 157 ms at 1 ms samples
+    /// assert_eq!(prior.fastest_tap(), 31);
+    /// # Ok::<(), contact_bounce::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`LearnerPrior::new`]; [`Parameter::SamplePeriod`] with [`Reason::NotPositive`] for
+    /// a period of 0, and with [`Reason::OutOfRange`] for one longer than the fastest tap or so
+    /// short that the tap exceeds [`Windows::MAX_TICKS`] samples.
+    pub const fn at_period(press: u16, release: u16, period_ns: u32) -> Result<Self, Error> {
+        if period_ns == 0 {
+            return Err(Error::new(Parameter::SamplePeriod, Reason::NotPositive));
+        }
+        let tap = FASTEST_TAP_NS / period_ns;
+        // (a `const fn`: `as`, after the range check; `Windows::MAX_TICKS` fits a u32)
+        #[allow(clippy::as_conversions)]
+        let most = Windows::MAX_TICKS as u32;
+        if tap == 0 || tap > most {
+            return Err(Error::new(Parameter::SamplePeriod, Reason::OutOfRange));
+        }
+        #[allow(clippy::cast_possible_truncation, clippy::as_conversions)]
+        Self::new(press, release, tap as u16)
+    }
+
+    /// From the windows of a [`Windows`] (its mode is not used) and a fastest tap in samples.
+    ///
+    /// # Errors
+    /// As [`LearnerPrior::new`].
+    pub const fn from_windows(windows: &Windows, fastest_tap: u16) -> Result<Self, Error> {
+        Self::new(windows.press(), windows.release(), fastest_tap)
+    }
+
+    /// The press prior (samples).
+    #[must_use]
+    pub const fn press(&self) -> u16 {
+        self.press
+    }
+
+    /// The release prior (samples).
+    #[must_use]
+    pub const fn release(&self) -> u16 {
+        self.release
+    }
+
+    /// The fastest real tap (samples).
+    #[must_use]
+    pub const fn fastest_tap(&self) -> u16 {
+        self.fastest_tap
+    }
+}
+
+/// What the learner has seen of one kind (press or release), in samples.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Tail {
     /// Events seen (saturating).
     pub events: u8,
-    /// Events with a late burst (saturating).
-    pub late: u8,
-    /// The longest bounce of an event without a late burst.
-    pub burst: u16,
-    /// The longest bounce of an event with a late burst.
-    pub late_bounce: u16,
+    /// The switch's own reversions of at least half the fastest tap (saturating).
+    pub long_reversions: u8,
+    /// The longest bounce: from an edge to the end of its last excursion shorter than a tap.
+    pub bounce: u16,
+    /// The longest of the switch's own reversions: an excursion away from the reported level
+    /// that came back in less than the fastest tap.
+    pub reversion: u16,
 }
 
 /// The window `m` samples of bounce ask for: `m + (m - 1) / 2` (one sample for none), at most
@@ -92,54 +185,45 @@ const fn min(a: u16, b: u16) -> u16 {
 }
 
 impl Tail {
-    /// The longest bounce seen (samples).
+    /// The window this tail gives with the kind's `prior` and the fastest tap `tap` (samples;
+    /// see [`crate::learn`]): never longer than the tap.
     #[must_use]
-    pub const fn longest(&self) -> u16 {
-        max(self.burst, self.late_bounce)
+    pub const fn window(&self, prior: u16, tap: u16) -> u16 {
+        let seen = grow(self.bounce);
+        let window = if self.events < WARM_UP {
+            max(prior, seen)
+        } else {
+            seen
+        };
+        min(window, tap)
     }
 
-    /// The window this tail gives with `prior` (samples; see [`crate::learn`]).
+    /// The switch has reverted for at least half the fastest tap of `prior`: it will also
+    /// revert for as long as a tap, and those reversions are reported as taps (false edges that
+    /// no rule on timing alone can tell from real taps).
     #[must_use]
-    pub const fn window(&self, prior: u16) -> u16 {
-        let seen = self.longest();
-        if seen >= prior {
-            return grow(seen);
-        }
-        // Late bursts far beyond the plain bursts are another mechanism, whose scale a few
-        // cannot tell; late bursts on the plain bursts' scale are more of the same.
-        let apart = self.late > 0 && self.late_bounce > LATE_GAP.saturating_mul(max(self.burst, 1));
-        let trusted = if self.events < WARM_UP || (apart && self.late < LATE_EVIDENCE) {
-            prior
-        } else {
-            grow(seen)
-        };
-        // Never below what was seen (a watch of `seen` samples covers a change seen at `seen`),
-        // nor below one sample.
-        max(min(trusted, prior), max(seen, 1))
+    pub const fn reverts_like_a_tap(&self, prior: &LearnerPrior) -> bool {
+        self.long_reversions > 0 && self.reversion.saturating_mul(2) >= prior.fastest_tap
     }
 
     const fn from_bytes(b: [u8; 6]) -> Self {
         Self {
             events: b[0],
-            late: b[1],
-            burst: u16::from_le_bytes([b[2], b[3]]),
-            late_bounce: u16::from_le_bytes([b[4], b[5]]),
+            long_reversions: b[1],
+            bounce: u16::from_le_bytes([b[2], b[3]]),
+            reversion: u16::from_le_bytes([b[4], b[5]]),
         }
     }
 
     const fn valid(self) -> bool {
-        self.late <= self.events
-            && self.burst <= Windows::MAX_TICKS
-            && self.late_bounce <= Windows::MAX_TICKS
+        self.bounce <= Windows::MAX_TICKS && self.reversion <= Windows::MAX_TICKS
     }
 
-    fn record(&mut self, bounce: u16, late: bool) {
-        self.events = self.events.saturating_add(1);
-        if late {
-            self.late = self.late.saturating_add(1);
-            self.late_bounce = max(self.late_bounce, bounce);
-        } else {
-            self.burst = max(self.burst, bounce);
+    /// A reversion of the switch's own, `lasted` samples, with `tap` the fastest tap.
+    fn reverted(&mut self, lasted: u16, tap: u16) {
+        self.reversion = max(self.reversion, min(lasted, Windows::MAX_TICKS));
+        if lasted.saturating_mul(2) >= tap {
+            self.long_reversions = self.long_reversions.saturating_add(1);
         }
     }
 }
@@ -156,20 +240,30 @@ pub struct Learned {
 }
 
 impl Learned {
-    /// The saved form: press then release, each events, late, burst and late bounce (little
-    /// endian).
+    /// The saved form: press then release, each events, long reversions, bounce and reversion
+    /// (little endian).
     #[must_use]
     pub const fn to_bytes(&self) -> [u8; 12] {
         let (p, r) = (self.press, self.release);
-        let (pb, pl, rb, rl) = (
-            p.burst.to_le_bytes(),
-            p.late_bounce.to_le_bytes(),
-            r.burst.to_le_bytes(),
-            r.late_bounce.to_le_bytes(),
+        let (pb, pr, rb, rr) = (
+            p.bounce.to_le_bytes(),
+            p.reversion.to_le_bytes(),
+            r.bounce.to_le_bytes(),
+            r.reversion.to_le_bytes(),
         );
         [
-            p.events, p.late, pb[0], pb[1], pl[0], pl[1], r.events, r.late, rb[0], rb[1], rl[0],
-            rl[1],
+            p.events,
+            p.long_reversions,
+            pb[0],
+            pb[1],
+            pr[0],
+            pr[1],
+            r.events,
+            r.long_reversions,
+            rb[0],
+            rb[1],
+            rr[0],
+            rr[1],
         ]
     }
 
@@ -177,8 +271,8 @@ impl Learned {
     ///
     /// # Errors
     /// [`Parameter::Time`] with [`Reason::OutOfRange`] when the bytes cannot have been saved by
-    /// a learner (more late bursts than events, a bounce longer than
-    /// [`Windows::MAX_TICKS`]): erased or corrupted storage.
+    /// a learner (a bounce or reversion longer than [`Windows::MAX_TICKS`]): erased or
+    /// corrupted storage.
     pub const fn from_bytes(b: [u8; 12]) -> Result<Self, Error> {
         let press = Tail::from_bytes([b[0], b[1], b[2], b[3], b[4], b[5]]);
         let release = Tail::from_bytes([b[6], b[7], b[8], b[9], b[10], b[11]]);
@@ -203,8 +297,8 @@ impl Learned {
             u16::try_from(v.min(u32::from(Windows::MAX_TICKS))).unwrap_or(Windows::MAX_TICKS)
         };
         let tail = |t: Tail| Tail {
-            burst: scale(t.burst),
-            late_bounce: scale(t.late_bounce),
+            bounce: scale(t.bounce),
+            reversion: scale(t.reversion),
             ..t
         };
         Ok(Self {
@@ -213,29 +307,42 @@ impl Learned {
         })
     }
 
-    /// The press and release windows with the priors of `prior` (its mode is not used).
+    /// The press and release windows with `prior` (samples).
     #[must_use]
-    pub const fn windows(&self, prior: &Windows) -> (u16, u16) {
+    pub const fn windows(&self, prior: &LearnerPrior) -> (u16, u16) {
         (
-            self.press.window(prior.press()),
-            self.release.window(prior.release()),
+            self.press.window(prior.press, prior.fastest_tap),
+            self.release.window(prior.release, prior.fastest_tap),
         )
+    }
+
+    /// Either kind [reverts like a tap](Tail::reverts_like_a_tap).
+    #[must_use]
+    pub const fn reverts_like_a_tap(&self, prior: &LearnerPrior) -> bool {
+        self.press.reverts_like_a_tap(prior) || self.release.reverts_like_a_tap(prior)
+    }
+
+    const fn tail(&mut self, press: bool) -> &mut Tail {
+        if press {
+            &mut self.press
+        } else {
+            &mut self.release
+        }
     }
 }
 
 const LEVEL: u8 = 1;
-const RAW: u8 = 2;
-const ACTIVE: u8 = 4;
-const LATE: u8 = 8;
-const RECENT: u8 = 16;
+const ACTIVE: u8 = 2;
+const EVENT: u8 = 4;
 
 /// One key's learning debouncer state (see [`crate::learn`]): what it learned and the event in
-/// progress. 24 bytes; integer-only per sample.
+/// progress. 26 bytes; integer-only per sample.
 ///
 /// ```
-/// use contact_bounce::{Edge, LearningState, Mode, Windows};
-/// // Prior: 8 samples each way. The press bounces for 2 samples each time.
-/// let prior = Windows::new(8, 8, Mode::HoldOff)?;
+/// use contact_bounce::{Edge, LearnerPrior, LearningState};
+/// // Prior: 8 samples each way; no real tap is shorter than 12 samples. The press bounces for
+/// // 2 samples each time.
+/// let prior = LearnerPrior::new(8, 8, 12)?;
 /// let mut key = LearningState::new(false);
 /// for _ in 0..12 {
 ///     let mut press = [true; 20];
@@ -254,20 +361,20 @@ const RECENT: u8 = 16;
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct LearningState {
     learned: Learned,
-    /// Samples since the event's edge (saturating; no longer counted once the event has been
-    /// over for a quiet interval).
+    /// Samples since the event's edge (saturating; no longer counted once the event is over).
     since: u16,
-    /// When the event's last change was seen.
-    last: u16,
-    /// When its first burst's last change was seen.
-    burst_end: u16,
-    /// When it ends, unless the contact keeps changing.
+    /// Samples in a row the contact has read the other level than the reported one.
+    run: u16,
+    /// This event's bounce so far: when its last excursion shorter than a tap ended.
+    bounce: u16,
+    /// Samples from the previous edge to this event's.
+    previous: u16,
+    /// Samples the contact had read this event's level before its edge was reported.
+    lead: u16,
+    /// This event's window.
     guard: u16,
-    /// Samples from the previous event's edge to the current one's (counted up to one quiet
-    /// interval past its watch: a lower bound beyond).
-    previous_span: u16,
-    /// LEVEL (debounced closed), RAW (last sample closed), ACTIVE (an event in progress),
-    /// LATE (it has a late burst), RECENT (an event ended less than a quiet interval ago).
+    /// LEVEL (reported closed), ACTIVE (the event is still watched), EVENT (an edge has been
+    /// reported since the key was settled: there is an event to learn from).
     flags: u8,
 }
 
@@ -280,15 +387,15 @@ impl LearningState {
             Learned {
                 press: Tail {
                     events: 0,
-                    late: 0,
-                    burst: 0,
-                    late_bounce: 0,
+                    long_reversions: 0,
+                    bounce: 0,
+                    reversion: 0,
                 },
                 release: Tail {
                     events: 0,
-                    late: 0,
-                    burst: 0,
-                    late_bounce: 0,
+                    long_reversions: 0,
+                    bounce: 0,
+                    reversion: 0,
                 },
             },
         )
@@ -298,15 +405,15 @@ impl LearningState {
     /// [`Learned::from_bytes`]).
     #[must_use]
     pub const fn restore(closed: bool, learned: Learned) -> Self {
-        let level = if closed { LEVEL | RAW } else { 0 };
         Self {
             learned,
             since: u16::MAX,
-            last: 0,
-            burst_end: 0,
+            run: 0,
+            bounce: 0,
+            previous: u16::MAX,
+            lead: u16::MAX,
             guard: 0,
-            previous_span: u16::MAX,
-            flags: level,
+            flags: if closed { LEVEL } else { 0 },
         }
     }
 
@@ -331,120 +438,101 @@ impl LearningState {
     /// Settles the key at `closed` without reporting an edge, keeping what it learned (for
     /// example after a sleep in which the pin was not sampled).
     pub fn settle(&mut self, closed: bool) {
+        self.learn_event();
         *self = Self::restore(closed, self.learned);
     }
 
-    /// Feeds one sample (`true`: the contact reads closed) with the caller's prior windows in
-    /// samples (the mode of `prior` is not used: this learner always reports at once); returns
-    /// the edge it debounces, if any.
+    /// The event in progress (if an edge started one) ends: its bounce is learned.
+    const fn learn_event(&mut self) {
+        if self.flags & EVENT != 0 {
+            let bounce = self.bounce;
+            let tail = self.learned.tail(self.flags & LEVEL != 0);
+            tail.events = tail.events.saturating_add(1);
+            tail.bounce = max(tail.bounce, bounce);
+        }
+    }
+
+    /// Feeds one sample (`true`: the contact reads closed) with the caller's prior; returns the
+    /// edge it debounces, if any.
     // Always inlined: the idle path is the cost of nearly every sample, a few instructions
     // inline (docs/cost-report.md) where a call would cost more than the path.
     #[allow(clippy::inline_always)]
     #[inline(always)]
-    pub fn update(&mut self, closed: bool, prior: &Windows) -> Option<Edge> {
-        // The idle path, inlined and read-only: settled long enough ago, and the sample reads
-        // the level (as the last one did).
-        if self.flags & (ACTIVE | RECENT) == 0 && closed == self.is_closed() {
+    pub fn update(&mut self, closed: bool, prior: &LearnerPrior) -> Option<Edge> {
+        // The idle path, inlined and read-only: settled, and the sample reads the level.
+        if self.flags & ACTIVE == 0 && closed == self.is_closed() {
             return None;
         }
         self.watch(closed, *prior)
     }
 
-    /// The quiet (samples) that makes a change a late burst and ends an event: [`LATE_GAP`]
-    /// times the first burst, at least [`LATE_GAP`] samples and the prior of the kind the
-    /// contact is in over [`LATE_GAP_PRIOR_SHARE`].
-    fn quiet(&self, prior: Windows) -> u16 {
-        let own = if self.is_closed() {
-            prior.press()
-        } else {
-            prior.release()
-        };
-        max(
-            LATE_GAP.saturating_mul(max(self.burst_end, 1)),
-            own / LATE_GAP_PRIOR_SHARE,
-        )
-    }
-
-    /// [`LearningState::update`] while an edge is in progress or starts.
+    /// [`LearningState::update`] while an event is watched or an edge starts.
     #[inline(never)]
-    fn watch(&mut self, closed: bool, prior: Windows) -> Option<Edge> {
-        let changed = closed != (self.flags & RAW != 0);
-        self.flags = if closed {
-            self.flags | RAW
-        } else {
-            self.flags & !RAW
-        };
-        if self.flags & ACTIVE != 0 {
-            self.since = self.since.saturating_add(1);
-            if changed {
-                let quiet = self.quiet(prior);
-                if self.flags & LATE == 0 && self.since - self.last >= quiet {
-                    self.flags |= LATE;
-                }
-                if self.flags & LATE == 0 {
-                    self.burst_end = self.since;
-                }
-                self.last = self.since;
-                // Widen at once: quiet past the last change before the event ends.
-                let quiet = self.quiet(prior);
-                self.guard = max(self.guard, self.last.saturating_add(quiet));
-            }
-            if self.since < self.guard {
-                return None;
-            }
-            let late = self.flags & LATE != 0;
-            let tail = if self.is_closed() {
-                &mut self.learned.press
-            } else {
-                &mut self.learned.release
-            };
-            tail.record(min(self.last, Windows::MAX_TICKS), late);
-            self.flags = (self.flags & !(ACTIVE | LATE)) | RECENT;
-            // This sample may already show the next change: fall through.
-        } else {
+    fn watch(&mut self, closed: bool, prior: LearnerPrior) -> Option<Edge> {
+        let level = self.is_closed();
+        let active = self.flags & ACTIVE != 0;
+        if active {
             self.since = self.since.saturating_add(1);
         }
-        // Until one quiet interval after the watch, a change is that event's late bounce
-        // (below); after it, the idle path needs no count.
-        let quiet = self.quiet(prior);
-        let recent = self.flags & RECENT != 0 && self.since <= self.guard.saturating_add(quiet);
-        if !recent {
-            // No longer counted: `since` stays a lower bound of the time since the edge.
-            self.flags &= !RECENT;
-        }
-        if closed == self.is_closed() {
+        if closed == level {
+            if self.run > 0 {
+                // The contact came back in less than a tap: an excursion of the switch's own.
+                let tap = prior.fastest_tap;
+                self.learned.tail(level).reverted(self.run, tap);
+                self.bounce = max(self.bounce, min(self.since, tap));
+                self.run = 0;
+            }
+            if active && self.since > prior.fastest_tap {
+                // Watched to its end: the idle path takes over.
+                self.flags &= !ACTIVE;
+            }
             return None;
         }
-        // The contact comes back within one quiet interval after the watch of the event that
-        // just ended: that event's edge was false, a late bounce of the event before it (of
-        // this edge's kind), which lasted at least until now. Counted up to the prior only: a
-        // genuine quick double tap looks the same and must not ratchet the window up; it only
-        // sends it back to the prior.
-        if recent {
-            let (tail, cap) = if closed {
-                (&mut self.learned.press, prior.press())
-            } else {
-                (&mut self.learned.release, prior.release())
-            };
-            let bounce = min(self.previous_span.saturating_add(self.since), cap);
-            if tail.late < tail.events {
-                tail.late += 1;
-            }
-            tail.late_bounce = max(tail.late_bounce, bounce);
+        self.run = self.run.saturating_add(1);
+        if active && self.since < self.guard && self.run < prior.fastest_tap {
+            return None;
+        }
+        Some(self.report(closed, prior))
+    }
+
+    /// Reports the edge to `closed` and ends the event before it.
+    fn report(&mut self, closed: bool, prior: LearnerPrior) -> Edge {
+        let tap = prior.fastest_tap;
+        // The event's level lasted from `lead` samples before its edge until this change began
+        // (`run - 1` samples ago).
+        let lasted = self
+            .lead
+            .saturating_add(self.since.saturating_sub(self.run.saturating_sub(1)));
+        if self.flags & ACTIVE != 0 && lasted < tap && self.previous < tap {
+            // Back in less than a tap, and that edge came less than a tap after the one before:
+            // it was the switch's, a reversion in the event before it (whose kind this edge's
+            // is), which bounced until now. (A level that began a tap or more after the edge
+            // before may be a real tap whose bounce hid its first samples: it is taken as one.)
+            let end = self
+                .previous
+                .saturating_add(self.since.saturating_sub(self.run.saturating_sub(1)));
+            let before = self.learned.tail(closed);
+            before.reverted(lasted, tap);
+            before.bounce = max(before.bounce, min(end, tap));
+        } else {
+            // A real edge's event ends here.
+            self.learn_event();
         }
         let (press, release) = self.learned.windows(&prior);
-        let (edge, window) = if closed {
-            (Edge::Press, press)
-        } else {
-            (Edge::Release, release)
-        };
-        self.flags = (self.flags & RAW) | ACTIVE | if closed { LEVEL } else { 0 };
-        self.previous_span = self.since;
+        // The window runs from the report. An edge reported late (its change began inside the
+        // window before) can hold a real tap's next change back by as much: late, never lost.
+        self.guard = if closed { press } else { release };
+        self.previous = self.since;
+        self.lead = self.run.saturating_sub(1);
         self.since = 0;
-        self.last = 0;
-        self.burst_end = 0;
-        self.guard = window;
-        Some(edge)
+        self.run = 0;
+        self.bounce = 0;
+        self.flags = ACTIVE | EVENT | if closed { LEVEL } else { 0 };
+        if closed {
+            Edge::Press
+        } else {
+            Edge::Release
+        }
     }
 }
 
@@ -452,11 +540,11 @@ impl LearningState {
 /// [`crate::learn`]), sampled by the caller at a period of its choosing.
 ///
 /// ```
-/// use contact_bounce::{Edge, LearningDebouncer, Mode, debounce::Polarity, Windows};
+/// use contact_bounce::{Edge, LearnerPrior, LearningDebouncer, debounce::Polarity};
 /// use embedded_hal_mock::eh1::digital::{Mock, State as Level, Transaction};
 /// let levels = [Level::High, Level::Low, Level::High, Level::Low, Level::Low];
 /// let mut pin = Mock::new(&levels.map(|l| Transaction::get(l)));
-/// let prior = Windows::new(3, 3, Mode::HoldOff)?;
+/// let prior = LearnerPrior::new(3, 3, 10)?;
 /// let mut button = LearningDebouncer::new(pin.clone(), prior, Polarity::ActiveLow).unwrap();
 /// let edges: Vec<_> = (0..4).map(|_| button.update().unwrap()).collect();
 /// assert_eq!(edges, [Some(Edge::Press), None, None, None]);
@@ -466,7 +554,7 @@ impl LearningState {
 #[derive(Debug)]
 pub struct LearningDebouncer<P> {
     pin: P,
-    prior: Windows,
+    prior: LearnerPrior,
     polarity: Polarity,
     state: LearningState,
 }
@@ -476,7 +564,7 @@ impl<P: InputPin> LearningDebouncer<P> {
     ///
     /// # Errors
     /// The pin's error.
-    pub fn new(pin: P, prior: Windows, polarity: Polarity) -> Result<Self, P::Error> {
+    pub fn new(pin: P, prior: LearnerPrior, polarity: Polarity) -> Result<Self, P::Error> {
         Self::restore(pin, prior, polarity, Learned::default())
     }
 
@@ -486,7 +574,7 @@ impl<P: InputPin> LearningDebouncer<P> {
     /// The pin's error.
     pub fn restore(
         mut pin: P,
-        prior: Windows,
+        prior: LearnerPrior,
         polarity: Polarity,
         learned: Learned,
     ) -> Result<Self, P::Error> {
@@ -526,6 +614,12 @@ impl<P: InputPin> LearningDebouncer<P> {
         self.state.learned().windows(&self.prior)
     }
 
+    /// The switch reverts for as long as a tap (see [`Tail::reverts_like_a_tap`]).
+    #[must_use]
+    pub const fn reverts_like_a_tap(&self) -> bool {
+        self.state.learned().reverts_like_a_tap(&self.prior)
+    }
+
     /// Gives the pin back.
     pub fn free(self) -> P {
         self.pin
@@ -542,15 +636,34 @@ fn read<P: InputPin>(pin: &mut P, polarity: Polarity) -> Result<bool, P::Error> 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::debounce::Mode;
 
-    fn prior(ticks: u16) -> Windows {
-        Windows::new(ticks, ticks, Mode::HoldOff).unwrap_or_else(|_| unreachable!())
+    fn prior(ticks: u16, tap: u16) -> LearnerPrior {
+        LearnerPrior::new(ticks, ticks, tap).unwrap_or_else(|_| unreachable!())
     }
 
-    /// One press of `bounce` (closed, open, closed... for `bounce` samples, then closed), held
-    /// for `hold` samples, and a clean release held `hold` samples; the edges reported.
-    fn cycle(key: &mut LearningState, p: Windows, bounce: &[bool], hold: usize) -> [usize; 2] {
+    /// Feeds `samples`; the first four edges reported, with the sample index of each, and
+    /// how many there were.
+    fn feed(
+        key: &mut LearningState,
+        p: LearnerPrior,
+        samples: &[bool],
+    ) -> ([(usize, Edge); 4], usize) {
+        let mut out = [(0, Edge::Press); 4];
+        let mut n = 0;
+        for (i, &s) in samples.iter().enumerate() {
+            if let Some(e) = key.update(s, &p) {
+                if let Some(slot) = out.get_mut(n) {
+                    *slot = (i, e);
+                }
+                n += 1;
+            }
+        }
+        (out, n)
+    }
+
+    /// One press of `bounce` (then closed) held `hold` samples, and a clean release held
+    /// `hold` samples; the count of press and release edges reported.
+    fn cycle(key: &mut LearningState, p: LearnerPrior, bounce: &[bool], hold: usize) -> [usize; 2] {
         let mut edges = [0, 0];
         for &s in bounce.iter().chain(core::iter::repeat_n(&true, hold)) {
             if key.update(s, &p).is_some() {
@@ -566,104 +679,209 @@ mod tests {
     }
 
     #[test]
+    fn a_prior_is_checked() {
+        let time = |r| Err(Error::new(Parameter::Time, r));
+        assert_eq!(LearnerPrior::new(0, 5, 31), time(Reason::NotPositive));
+        assert_eq!(LearnerPrior::new(5, 5, 0), time(Reason::NotPositive));
+        assert_eq!(
+            LearnerPrior::new(Windows::MAX_TICKS + 1, 5, 31),
+            time(Reason::OutOfRange)
+        );
+        assert_eq!(
+            LearnerPrior::new(5, 5, Windows::MAX_TICKS + 1),
+            time(Reason::OutOfRange)
+        );
+        let period = |r| Err(Error::new(Parameter::SamplePeriod, r));
+        assert_eq!(
+            LearnerPrior::at_period(5, 5, 0),
+            period(Reason::NotPositive)
+        );
+        // Longer than a tap, and so short that a tap is more samples than the counter holds.
+        assert_eq!(
+            LearnerPrior::at_period(5, 5, 40_000_000),
+            period(Reason::OutOfRange)
+        );
+        assert_eq!(
+            LearnerPrior::at_period(5, 5, 100),
+            period(Reason::OutOfRange)
+        );
+        // 0.1 ms samples: 310 samples a tap.
+        assert_eq!(
+            LearnerPrior::at_period(1570, 1570, 100_000).map(|p| p.fastest_tap()),
+            Ok(310)
+        );
+    }
+
+    #[test]
     fn it_keeps_the_prior_while_warming_up_then_tightens_to_what_it_saw() {
-        let p = prior(50);
+        let p = prior(50, 60);
         let mut key = LearningState::new(false);
-        // Bounce: closed, open, open, closed, open, closed (last change at sample 5).
+        // Bounce: closed, open, open, closed, open, closed (back for good at sample 5).
         let bounce = [true, false, false, true, false, true];
         for n in 1..=12_u8 {
             assert_eq!(cycle(&mut key, p, &bounce, 80), [1, 1]);
             let (press, release) = key.learned().windows(&p);
-            if n < WARM_UP {
-                assert_eq!((press, release), (50, 50), "event {n}");
-            } else {
-                // 5 samples of bounce: 5 + (5 - 1) / 2.
-                assert_eq!((press, release), (7, 1), "event {n}");
-            }
+            // (an event is learned when the next edge ends it: a press at its release, a
+            // release at the next press, one cycle later)
+            // 5 samples of bounce: 5 + (5 - 1) / 2.
+            let want_press = if n < WARM_UP { 50 } else { 7 };
+            let want_release = if n <= WARM_UP { 50 } else { 1 };
+            assert_eq!((press, release), (want_press, want_release), "event {n}");
         }
-        assert_eq!(key.learned().press.burst, 5);
+        assert_eq!(key.learned().press.bounce, 5);
+        // Two flights of 1 and 2 samples: no reversion like a tap.
+        assert_eq!(key.learned().press.reversion, 2);
+        assert!(!key.learned().reverts_like_a_tap(&p));
     }
 
     #[test]
-    fn a_bounce_that_outlasts_the_window_extends_the_event_instead_of_a_false_edge() {
-        let p = prior(3);
+    fn a_window_is_never_longer_than_the_fastest_tap_whatever_the_prior() {
+        let p = prior(157, 31);
+        let key = LearningState::new(false);
+        assert_eq!(key.learned().windows(&p), (31, 31));
+        // A switch that bounces for 100 samples: the window stays at the tap, and a change
+        // that lasts a tap is reported.
+        let restored = Learned {
+            press: Tail {
+                events: 50,
+                long_reversions: 0,
+                bounce: 100,
+                reversion: 3,
+            },
+            release: Tail {
+                events: 50,
+                ..Tail::default()
+            },
+        };
+        assert_eq!(restored.windows(&p), (31, 1));
+    }
+
+    #[test]
+    fn ten_thousand_clean_taps_at_16_a_second_keep_every_tap_and_grow_no_window() {
+        // 1 ms samples, the README's hand-operated prior (157 ms), the default fastest tap (31
+        // samples). Taps at 16 a second: 62.5 ms a tap, down 31 or 32 samples and up the rest.
+        let p = LearnerPrior::at_period(157, 157, 1_000_000).unwrap_or_else(|_| unreachable!());
         let mut key = LearningState::new(false);
-        // Changes every 2 samples for 20 samples: far past the 3-sample window.
-        let bounce: [bool; 20] = core::array::from_fn(|i| (i / 2) % 2 == 0);
-        assert_eq!(cycle(&mut key, p, &bounce, 100), [1, 1]);
-        // It measured the whole bounce, and the next window covers it.
-        let seen = key.learned().press.burst;
-        assert!(seen >= 18, "{seen}");
-        assert!(key.learned().windows(&p).0 > seen);
-    }
-
-    #[test]
-    fn what_counts_as_a_late_burst_does_not_depend_on_the_sampling_period() {
-        // Presses in time: chatter for 0.8 ms (the contact open 0.2-0.5 ms and 0.7-0.8 ms), and
-        // in half of them a burst open again from 8 to 9 ms. Sampled every 1 ms and every
-        // 10 us with the same 157 ms prior, the chatter is the first burst and only the 8 ms
-        // one is late: 3 late bursts in 6 presses at both periods. (Without the prior's share
-        // in the gap, the 10 us samples took the chatter's 0.2 ms gap for a late burst too: 6.)
-        let mut lates = [0_u8; 2];
-        for (slot, period) in [1e-3, 1e-5].into_iter().enumerate() {
-            let ticks = |t: f64| {
-                #[allow(
-                    clippy::cast_possible_truncation,
-                    clippy::cast_sign_loss,
-                    clippy::as_conversions
-                )]
-                let n = (t / period).round() as usize;
-                n
-            };
-            let p = prior(u16::try_from(ticks(157e-3)).unwrap_or(u16::MAX));
-            let mut key = LearningState::new(false);
-            for late_burst in [false, true, false, true, false, true] {
-                let mut samples = [true; 1000];
-                for (i, s) in samples.iter_mut().enumerate() {
-                    #[allow(clippy::cast_precision_loss, clippy::as_conversions)]
-                    let t = (i as f64 + 0.5) * period;
-                    let chatter = (0.2e-3..0.5e-3).contains(&t) || (0.7e-3..0.8e-3).contains(&t);
-                    *s = !(chatter || (late_burst && (8e-3..9e-3).contains(&t)));
-                }
-                let bounce = samples.get(..ticks(10e-3)).unwrap_or(&[]);
-                cycle(&mut key, p, bounce, ticks(200e-3));
+        for _ in 0..500 {
+            assert_eq!(key.update(false, &p), None);
+        }
+        let (mut presses, mut releases) = (0, 0);
+        for tap in 0..10_000_u32 {
+            let down = if tap % 2 == 0 { 31 } else { 32 };
+            let up = if tap % 2 == 0 { 32 } else { 31 };
+            for _ in 0..down {
+                presses += usize::from(key.update(true, &p) == Some(Edge::Press));
             }
-            if let Some(late) = lates.get_mut(slot) {
-                *late = key.learned().press.late;
+            for _ in 0..up {
+                releases += usize::from(key.update(false, &p) == Some(Edge::Release));
             }
         }
-        assert_eq!(lates, [3, 3]);
+        assert_eq!((presses, releases), (10_000, 10_000));
+        let (press, release) = key.learned().windows(&p);
+        assert!(press <= p.fastest_tap() && release <= p.fastest_tap());
+        // A clean switch: one sample each.
+        assert_eq!((press, release), (1, 1));
     }
 
     #[test]
-    fn a_late_burst_keeps_the_prior_until_three_were_seen() {
-        let p = prior(100);
+    fn a_real_tap_inside_a_window_is_reported_and_never_makes_it_grow() {
+        // A window of 20 samples (prior) and a fastest tap of 20: a release 5 samples after
+        // the press that stays open 20 samples is reported when the window ends, at sample 20;
+        // the press after it, at 25, falls in the release's window (from 20) and is reported
+        // when that ends, at 40: late, not lost.
+        let p = prior(20, 20);
+        let mut key = LearningState::new(false);
+        let mut samples = [true; 60];
+        for s in samples.iter_mut().take(25).skip(5) {
+            *s = false;
+        }
+        let (edges, n) = feed(&mut key, p, &samples);
+        assert_eq!(n, 3);
+        assert_eq!(
+            edges.get(..3),
+            Some(&[(0, Edge::Press), (20, Edge::Release), (40, Edge::Press)][..])
+        );
+        // The release lasted a tap: nothing of it counts as bounce.
+        assert_eq!(key.learned().press.bounce, 0);
+        assert_eq!(key.learned().press.reversion, 0);
+    }
+
+    #[test]
+    fn a_short_reversion_after_the_window_widens_it_and_a_late_glitch_does_not() {
+        let p = prior(4, 31);
         let mut key = LearningState::new(false);
         let plain = [true, false, true];
         for _ in 0..WARM_UP {
             cycle(&mut key, p, &plain, 200);
         }
         assert_eq!(key.learned().windows(&p).0, 2);
-        // A burst after 30 quiet samples: a late burst (quiet >= 4 x the first burst).
-        let mut late = [true; 40];
+        // Open for 12 samples at sample 10: after the 2-sample window, two false edges (the
+        // press part shows three edges); it came back in less than a tap, within a tap of the
+        // press: the switch's own. The press window grows to cover its end (sample 22):
+        // 22 + 21 / 2 = 32, at most the tap.
+        let mut late = [true; 60];
+        for s in late.iter_mut().take(22).skip(10) {
+            *s = false;
+        }
         late[1] = false;
-        late[33] = false;
-        late[34] = false;
-        // The first comes after the 4-sample window: the quiet ended the event, so it gives
-        // two false edges (open, then closed again), and the contact's return sends the
-        // window back to the prior at once.
-        assert_eq!(cycle(&mut key, p, &late, 200)[0], 3);
-        assert_eq!(key.learned().windows(&p).0, 100);
-        // The prior covers the next: each is a late burst inside the watch, no false edge.
-        assert_eq!(cycle(&mut key, p, &late, 200)[0], 1);
-        assert_eq!(key.learned().windows(&p).0, 100);
-        assert_eq!(cycle(&mut key, p, &late, 200)[0], 1);
-        // Three seen: 3/2 of the longest late bounce (its last change, back to closed, at
-        // sample 35).
-        assert_eq!(key.learned().press.late, LATE_EVIDENCE);
-        assert_eq!(key.learned().press.late_bounce, 35);
-        assert_eq!(key.learned().windows(&p).0, 35 + 17);
-        assert_eq!(cycle(&mut key, p, &late, 200)[0], 1);
+        assert_eq!(cycle(&mut key, p, &late, 200), [3, 1]);
+        assert_eq!(key.learned().press.bounce, 22);
+        assert_eq!(key.learned().press.reversion, 12);
+        assert_eq!(key.learned().press.long_reversions, 0);
+        assert_eq!(key.learned().windows(&p).0, 31);
+        // Covered from then on: no false edge.
+        assert_eq!(cycle(&mut key, p, &late, 200), [1, 1]);
+        // A glitch of 2 samples half a second into a hold: two false edges, and no window grows.
+        let mut glitch = [true; 600];
+        glitch[500] = false;
+        glitch[501] = false;
+        let before = key.learned().windows(&p);
+        assert_eq!(cycle(&mut key, p, &glitch, 100), [3, 1]);
+        assert_eq!(key.learned().windows(&p), before);
+    }
+
+    #[test]
+    fn a_switch_that_reverts_like_a_tap_says_so() {
+        // Reversions of 20 samples where the fastest tap is 31: more than half a tap.
+        let p = prior(40, 31);
+        let mut key = LearningState::new(false);
+        let mut press = [true; 30];
+        for s in press.iter_mut().take(22).skip(2) {
+            *s = false;
+        }
+        for _ in 0..3 {
+            // Inside the window: swallowed, and counted.
+            assert_eq!(cycle(&mut key, p, &press, 100), [1, 1]);
+        }
+        let learned = key.learned();
+        assert_eq!(learned.press.reversion, 20);
+        assert_eq!(learned.press.long_reversions, 3);
+        assert!(learned.press.reverts_like_a_tap(&p));
+        assert!(learned.reverts_like_a_tap(&p));
+        assert!(!learned.release.reverts_like_a_tap(&p));
+    }
+
+    #[test]
+    fn the_same_rules_hold_in_samples_at_any_period() {
+        // The warm-up test's switch and taps at ten times the samples, with ten times the tap:
+        // the same decisions, ten times the windows (to rounding).
+        for scale in [1_usize, 10] {
+            let tap = u16::try_from(31 * scale).unwrap_or(u16::MAX);
+            let p = prior(u16::try_from(157 * scale).unwrap_or(u16::MAX), tap);
+            let mut key = LearningState::new(false);
+            let mut press = [true; 400];
+            for s in press.iter_mut().take(4 * scale).skip(scale) {
+                *s = false;
+            }
+            for _ in 0..12 {
+                let bounce = press.get(..40 * scale).unwrap_or(&[]);
+                assert_eq!(cycle(&mut key, p, bounce, 40 * scale), [1, 1]);
+            }
+            assert_eq!(
+                key.learned().press.bounce,
+                u16::try_from(4 * scale).unwrap_or(0)
+            );
+        }
     }
 
     #[test]
@@ -671,15 +889,15 @@ mod tests {
         let learned = Learned {
             press: Tail {
                 events: 12,
-                late: 3,
-                burst: 7,
-                late_bounce: 300,
+                long_reversions: 3,
+                bounce: 7,
+                reversion: 300,
             },
             release: Tail {
                 events: 11,
-                late: 0,
-                burst: 2,
-                late_bounce: 0,
+                long_reversions: 0,
+                bounce: 2,
+                reversion: 0,
             },
         };
         let bytes = learned.to_bytes();
@@ -691,13 +909,13 @@ mod tests {
         );
         // Sampling twice as often: twice the samples, rounded up; saturating at the top.
         let fast = learned.rescale(2, 1).unwrap_or_else(|_| unreachable!());
-        assert_eq!((fast.press.burst, fast.press.late_bounce), (14, 600));
+        assert_eq!((fast.press.bounce, fast.press.reversion), (14, 600));
         let slow = learned.rescale(1, 3).unwrap_or_else(|_| unreachable!());
-        assert_eq!((slow.press.burst, slow.release.burst), (3, 1));
+        assert_eq!((slow.press.bounce, slow.release.bounce), (3, 1));
         let huge = learned
             .rescale(u16::MAX, 1)
             .unwrap_or_else(|_| unreachable!());
-        assert_eq!(huge.press.late_bounce, Windows::MAX_TICKS);
+        assert_eq!(huge.press.reversion, Windows::MAX_TICKS);
         assert!(learned.rescale(0, 1).is_err() && learned.rescale(1, 0).is_err());
         let restored = LearningState::restore(true, learned);
         assert!(restored.is_closed() && restored.is_settled());
@@ -706,14 +924,14 @@ mod tests {
 
     #[test]
     fn a_stuck_pin_and_noise_faster_than_the_samples_are_defined() {
-        let p = prior(Windows::MAX_TICKS);
+        let p = prior(Windows::MAX_TICKS, Windows::MAX_TICKS);
         // Stuck: no edge ever.
         let mut key = LearningState::new(false);
         for _ in 0..100_000 {
             assert_eq!(key.update(false, &p), None);
         }
         // Noise: a change at every sample for longer than the counters hold. One edge, the
-        // event saturates and ends, and the window stays within the counter.
+        // window stays within the tap.
         let mut key = LearningState::new(false);
         let mut edges = 0;
         for i in 0..200_000_u32 {
@@ -721,12 +939,13 @@ mod tests {
         }
         assert!(edges >= 1);
         let (press, release) = key.learned().windows(&p);
-        assert!(press <= Windows::MAX_TICKS && release <= Windows::MAX_TICKS);
+        assert!(press <= p.fastest_tap() && release <= p.fastest_tap());
     }
 
     #[test]
     fn a_key_is_a_few_bytes() {
-        assert_eq!(core::mem::size_of::<LearningState>(), 24);
+        assert_eq!(core::mem::size_of::<LearningState>(), 26);
         assert_eq!(core::mem::size_of::<Learned>(), 12);
+        assert_eq!(core::mem::size_of::<LearnerPrior>(), 6);
     }
 }

@@ -113,7 +113,7 @@ pub mod window;
 pub use debounce::{Debouncer, Edge, Mode, State, Windows};
 pub use error::{Error, Parameter, Reason};
 pub use float::Float;
-pub use learn::{LearningDebouncer, LearningState};
+pub use learn::{LearnerPrior, LearningDebouncer, LearningState};
 pub use mechanisms::{Hereditary, Undamped, Viscous};
 pub use method::{Method, Tolerance};
 pub use prediction::Prediction;

@@ -128,9 +128,15 @@ where
                 time_scale: a.time_scale,
                 switch_type: a.switch_type,
                 fixed: a.window,
+                fastest_tap: a.min_tap,
+                learner_prior: a.prior,
             },
             output: a.format,
             plot: a.plot,
+            taps: a.taps.then_some(crate::taps::TapSettings {
+                count: a.tap_count,
+                seed: a.tap_seed,
+            }),
         })),
         Some(Command::Calibrate(a)) => {
             let mut options = a.capture.into_options().map_err(refuse)?;
@@ -351,8 +357,33 @@ struct ReplayArgs {
     /// firmware's fixed window; repeatable)
     #[arg(long, value_name = "S", value_parser = seconds)]
     window: Vec<f64>,
+    /// The learner's prior window (s), for presses and releases (default: the switch type's)
+    #[arg(long, value_name = "S", value_parser = seconds)]
+    prior: Option<f64>,
+    /// No real tap is down or up for less than S: the learner always reports a change that
+    /// lasts this long
+    #[arg(long, value_name = "S", default_value_t = 31e-3, value_parser = positive)]
+    min_tap: f64,
+    /// Score every debouncer on seeded sequences of taps with human timing (typing, fast taps,
+    /// double-clicks, holds), spliced from the capture's later presses and releases, and on a
+    /// switch with no bounce: missed taps, false edges, correct taps, latencies
+    #[arg(long)]
+    taps: bool,
+    /// Taps per switch and regime (--taps)
+    #[arg(long, value_name = "N", default_value_t = 1000, value_parser = tap_count)]
+    tap_count: usize,
+    /// The tap sequences' seed (--taps)
+    #[arg(long, value_name = "N", default_value_t = 1)]
+    tap_seed: u64,
     #[command(flatten)]
     capture: CaptureArgs,
+}
+
+fn tap_count(v: &str) -> Result<usize, String> {
+    match v.parse::<usize>() {
+        Ok(n) if (1..=1_000_000).contains(&n) => Ok(n),
+        _ => Err(format!("'{v}' is not a count of taps from 1 to 1000000")),
+    }
 }
 
 const CALIBRATE_ABOUT: &str =

@@ -19,4 +19,5 @@ pub mod spool;
 pub mod spreads;
 pub mod strict;
 pub mod table;
+pub mod taps;
 pub mod workers;

@@ -12,7 +12,7 @@ use bounce_table::cli::{self, Invocation};
 use bounce_table::output::{clash, identifier, render_to};
 use bounce_table::scenes::{open, Entries};
 use bounce_table::strict::printable;
-use bounce_table::{calibrate, eval, plot, replay, table};
+use bounce_table::{calibrate, eval, plot, replay, table, taps};
 
 /// Writes to standard output. A reader that stopped early (`bounce-table ... | head`) ends the
 /// run quietly with success, as it does for other command-line tools; any other failure to
@@ -86,6 +86,52 @@ fn write_atomically_with(
         })
 }
 
+/// `bounce-table replay --taps`.
+fn taps_main(
+    request: &replay::Request,
+    t: &taps::TapSettings,
+    events: &[bounce_table::capture::Event],
+) -> ExitCode {
+    if request.output == replay::Output::Curve {
+        eprintln!("bounce-table replay: --format curve is the isolated replay's learning curve; with --taps, give table or json");
+        return ExitCode::from(2);
+    }
+    let lines = match taps::run(events, &request.capture, &request.settings, t) {
+        Ok(lines) => lines,
+        Err(e) => {
+            eprintln!("bounce-table replay: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    if let Some(dir) = &request.plot {
+        let mut groups: std::collections::BTreeMap<(&str, &str), Vec<&taps::TapLine>> =
+            std::collections::BTreeMap::new();
+        for l in &lines {
+            groups
+                .entry((l.switch.as_str(), l.regime.name()))
+                .or_default()
+                .push(l);
+        }
+        for ((switch, regime), group) in groups {
+            let name = format!(
+                "{dir}/{}-{regime}-taps.svg",
+                identifier(switch).to_lowercase()
+            );
+            if let Err(e) = std::fs::create_dir_all(dir)
+                .and_then(|()| write_atomically(&name, &taps::plot(&group)))
+            {
+                eprintln!("bounce-table replay: {name}: {e}");
+                return ExitCode::FAILURE;
+            }
+        }
+    }
+    match request.output {
+        replay::Output::Json => out!("{}", taps::json(&lines)),
+        _ => out!("{}", taps::markdown(&lines, t)),
+    }
+    ExitCode::SUCCESS
+}
+
 /// `bounce-table replay`.
 fn replay_main(request: &replay::Request) -> ExitCode {
     let (events, skipped) = match calibrate::load(&request.capture) {
@@ -95,6 +141,9 @@ fn replay_main(request: &replay::Request) -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    if let Some(t) = &request.taps {
+        return taps_main(request, t, &events);
+    }
     if request.output == replay::Output::Curve {
         return match replay::learning_curves(&events, &request.settings) {
             Ok(curves) => {

@@ -92,6 +92,14 @@ pub trait Polled {
     fn reset(&mut self, closed: bool);
     /// One sample.
     fn sample(&mut self, now: f64, closed: bool) -> Option<bool>;
+    /// The longer of its press and release windows now (s), where it learns them.
+    fn window(&self) -> Option<f64> {
+        None
+    }
+    /// Whether it says its switch reverts for as long as a tap, where it learns that.
+    fn reverts_like_a_tap(&self) -> Option<bool> {
+        None
+    }
 }
 
 /// QMK's `sym_defer_pk`.
@@ -617,6 +625,10 @@ pub struct Settings {
     /// Windows (s, press and release alike) to replay our debouncer with as they are: a
     /// firmware's fixed window checked against the capture.
     pub fixed: Vec<f64>,
+    /// The fastest real tap (s): the learner always reports a change that lasts this long.
+    pub fastest_tap: f64,
+    /// The learner's prior window (s), where not the switch type's.
+    pub learner_prior: Option<f64>,
 }
 
 /// One line of the benchmark.
@@ -644,6 +656,39 @@ impl Line {
     }
 }
 
+/// The calibrated window (s) of each switch and kind: `calibrate` on the earlier tests
+/// (`s.split`), their times multiplied by `s.time_scale`.
+#[must_use]
+pub fn calibrated(
+    events: &[Event],
+    c: &calibrate::Options,
+    s: &Settings,
+) -> BTreeMap<(String, Kind), f64> {
+    let mut by: BTreeMap<(&str, Kind), Vec<&Event>> = BTreeMap::new();
+    for e in events {
+        by.entry((e.switch.as_str(), e.kind)).or_default().push(e);
+    }
+    let mut out = BTreeMap::new();
+    for (&(switch, kind), list) in &by {
+        let earlier: Vec<_> = list[..calibrate::earlier_count(list.len(), s.split)]
+            .iter()
+            .map(|e| {
+                let scaled = Event {
+                    changes: e.changes.iter().map(|t| t * s.time_scale).collect(),
+                    ..(*e).clone()
+                };
+                scaled.describe(c.resolution * s.time_scale, c.burst_gap * s.time_scale)
+            })
+            .collect();
+        let refs: Vec<_> = earlier.iter().collect();
+        out.insert(
+            (switch.to_owned(), kind),
+            window(&refs, c.percentile).recommended(),
+        );
+    }
+    out
+}
+
 /// The benchmark on `events` (already read, with what cannot be one press left out), per switch
 /// and kind in their order; `calibrate` describes the earlier tests at `resolution` with
 /// `burst_gap` and sets the windows at `percentile`.
@@ -656,22 +701,7 @@ pub fn run(events: &[Event], c: &calibrate::Options, s: &Settings) -> Result<Vec
         by.entry((e.switch.as_str(), e.kind)).or_default().push(e);
     }
     let cut = |n: usize| calibrate::earlier_count(n, s.split);
-    // Calibrated windows per switch and kind, from the earlier tests.
-    let mut calibrated: BTreeMap<(&str, Kind), f64> = BTreeMap::new();
-    for (&(switch, kind), list) in &by {
-        let earlier: Vec<_> = list[..cut(list.len())]
-            .iter()
-            .map(|e| {
-                let scaled = Event {
-                    changes: e.changes.iter().map(|t| t * s.time_scale).collect(),
-                    ..(*e).clone()
-                };
-                scaled.describe(c.resolution * s.time_scale, c.burst_gap * s.time_scale)
-            })
-            .collect();
-        let refs: Vec<_> = earlier.iter().collect();
-        calibrated.insert((switch, kind), window(&refs, c.percentile).recommended());
-    }
+    let calibrated = calibrated(events, c, s);
     let mut lines = Vec::new();
     let mut learned_lines: Vec<Line> = Vec::new();
     for (switch, l) in learning_curves(events, s)? {
@@ -690,7 +720,12 @@ pub fn run(events: &[Event], c: &calibrate::Options, s: &Settings) -> Result<Vec
             .iter()
             .map(|e| Trace::of(e, s.time_scale))
             .collect();
-        let both = |k| calibrated.get(&(switch, k)).copied().unwrap_or(0.0);
+        let both = |k| {
+            calibrated
+                .get(&(switch.to_owned(), k))
+                .copied()
+                .unwrap_or(0.0)
+        };
         let mut rows = ours(
             "calibrated",
             both(Kind::Press),
@@ -739,6 +774,39 @@ pub fn run(events: &[Event], c: &calibrate::Options, s: &Settings) -> Result<Vec
     Ok(lines)
 }
 
+/// The learner's prior: `prior` (s) for both kinds and the fastest tap `fastest_tap` (s), in
+/// samples of `period` (s): the prior rounded up, the tap rounded down (a tap of that length is
+/// seen for at least that many samples at any phase).
+///
+/// # Errors
+/// Either does not fit [`Windows::MAX_TICKS`] samples, or the tap is shorter than a sample.
+pub fn learner_prior(
+    prior: f64,
+    fastest_tap: f64,
+    period: f64,
+) -> Result<contact_bounce::LearnerPrior, String> {
+    let ticks = contact_bounce::window::window_ticks(prior, 1.0, period)
+        .ok()
+        .and_then(|t| u16::try_from(t.max(1)).ok())
+        .filter(|t| *t <= Windows::MAX_TICKS)
+        .ok_or_else(|| {
+            format!(
+                "the prior's window does not fit {} samples of --period {period}: sample less often",
+                Windows::MAX_TICKS
+            )
+        })?;
+    #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+    let tap = ((fastest_tap / period) * (1.0 + 1e-9))
+        .floor()
+        .min(f64::from(u16::MAX)) as u16;
+    contact_bounce::LearnerPrior::new(ticks, ticks, tap).map_err(|_| {
+        format!(
+            "--min-tap {fastest_tap} is {tap} samples of --period {period}: it must be 1 to {}",
+            Windows::MAX_TICKS
+        )
+    })
+}
+
 /// One test of the learner's run: after it, the window of its kind.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CurvePoint {
@@ -770,18 +838,7 @@ pub struct Learning {
 /// # Errors
 /// The prior does not fit [`Windows::MAX_TICKS`] samples of `period`.
 pub fn learned(events: &[&Event], prior: f64, s: &Settings) -> Result<Learning, String> {
-    let ticks = contact_bounce::window::window_ticks(prior, 1.0, s.period)
-        .ok()
-        .and_then(|t| u16::try_from(t).ok())
-        .filter(|t| *t <= Windows::MAX_TICKS)
-        .ok_or_else(|| {
-            format!(
-                "the prior's window does not fit {} samples of --period {}: sample less often",
-                Windows::MAX_TICKS,
-                s.period
-            )
-        })?;
-    let windows = Windows::new(ticks, ticks, Mode::HoldOff).map_err(|e| e.to_string())?;
+    let windows = learner_prior(prior, s.fastest_tap, s.period)?;
     let count = |k: Kind| events.iter().filter(|e| e.kind == k).count();
     let cuts =
         [Kind::Press, Kind::Release].map(|k| (k, calibrate::earlier_count(count(k), s.split)));
@@ -882,8 +939,8 @@ pub fn learning_curves(events: &[Event], s: &Settings) -> Result<Vec<(String, Le
     for switch in switches {
         if let Some(prior) = priors::from_switch_name(switch).or(s.switch_type) {
             let all: Vec<&Event> = events.iter().filter(|e| e.switch == switch).collect();
-            let l = learned(&all, prior.window() * s.time_scale, s)
-                .map_err(|e| format!("{switch}: {e}"))?;
+            let from = s.learner_prior.unwrap_or(prior.window() * s.time_scale);
+            let l = learned(&all, from, s).map_err(|e| format!("{switch}: {e}"))?;
             out.push((switch.to_owned(), l));
         }
     }
@@ -1048,6 +1105,8 @@ pub struct Request {
     pub output: Output,
     /// Write one Pareto SVG per switch and kind there.
     pub plot: Option<String>,
+    /// Tap sequences instead of isolated presses (`--taps`).
+    pub taps: Option<crate::taps::TapSettings>,
 }
 
 #[cfg(test)]

@@ -136,7 +136,9 @@ fn a_reopening_switch_gets_the_answers_the_peers_documentation_gives() {
 #[test]
 fn time_scaled_captures_keep_the_calibrated_rows_clean() {
     let path = write("scaled.jsonl", &capture("scaled", 20, 6e-3, 12e-3));
-    for (scale, period) in [("10", "1e-3"), ("0.1", "1e-5")] {
+    // (the fastest tap scales with the capture: a contactor-like or reed-like switch, whose
+    // fastest real change is ten times or a tenth of a finger's)
+    for (scale, period, tap) in [("10", "1e-3", "0.31"), ("0.1", "1e-5", "0.0031")] {
         let r = rows(&[
             "--format",
             "json",
@@ -144,6 +146,8 @@ fn time_scaled_captures_keep_the_calibrated_rows_clean() {
             scale,
             "--period",
             period,
+            "--min-tap",
+            tap,
             "--switch-type",
             "push-button",
             path.to_str().unwrap(),

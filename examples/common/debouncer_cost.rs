@@ -5,7 +5,7 @@
 // idle path, 1000 samples of a settled open contact, through our debouncer, the learner and
 // the loop alone (`run_learner`).
 
-use contact_bounce::{LearningState, Mode, State, Windows};
+use contact_bounce::{LearnerPrior, LearningState, Mode, State, Windows};
 use core::hint::black_box;
 
 /// 1000 samples of a bouncing input (a 32-bit xorshift, biased to runs).
@@ -46,7 +46,7 @@ pub fn run(mark: impl Fn(u8), first: u8) {
 /// marked `first` .. `first + 5`.
 #[inline(always)]
 pub fn run_learner(mark: impl Fn(u8), first: u8) {
-    if let Ok(prior) = Windows::new(black_box(12), black_box(12), Mode::HoldOff) {
+    if let Ok(prior) = LearnerPrior::new(black_box(12), black_box(12), black_box(31)) {
         let mut key = LearningState::new(false);
         mark(first);
         for s in samples(black_box(0x1234_5678)) {

@@ -1,9 +1,9 @@
 // The lines of the learning debouncer, the same on the host, under QEMU and on the Uno: the
 // recorded press of the signal relay (10 us samples), pressed and released 12 times from a
-// 20 ms prior. Each press gives one edge and each release one; the press window comes down to
+// 20 ms prior, with the default fastest tap (31 ms, 3,100 samples). Each press gives one edge and each release one; the press window comes down to
 // 3/2 of the bounce it saw after 10 presses; what it learned is saved and restored.
 
-use contact_bounce::{learn::Learned, LearningState, Mode, Windows};
+use contact_bounce::{learn::Learned, LearnerPrior, LearningState};
 use core::fmt::Write;
 
 /// The recorded press (`samples` samples, 32 a word in `bits`, least significant first) at
@@ -17,7 +17,7 @@ fn closed_at(bits: &[u32], samples: usize, k: usize) -> bool {
 
 pub fn run(out: &mut impl Write, bits: &[u32], samples: usize) -> core::fmt::Result {
     // 20 ms of 10 us samples; each level held 30 ms, longer than any window.
-    let Ok(prior) = Windows::new(2000, 2000, Mode::HoldOff) else {
+    let Ok(prior) = LearnerPrior::at_period(2000, 2000, 10_000) else {
         return writeln!(out, "prior out of range");
     };
     let hold = 3000;

@@ -116,13 +116,13 @@ fn the_learning_debouncer_passes_pin_errors_through_and_restores_what_it_learned
     let learned = Learned {
         press: Tail {
             events: 12,
-            late: 0,
-            burst: 4,
-            late_bounce: 0,
+            long_reversions: 0,
+            bounce: 4,
+            reversion: 1,
         },
         release: Tail::default(),
     };
-    let prior = windows(50, 50, Mode::HoldOff);
+    let prior = contact_bounce::LearnerPrior::new(50, 50, 60).expect("in range");
     let mut button =
         LearningDebouncer::restore(pin.clone(), prior, Polarity::ActiveLow, learned).expect("pin");
     assert_eq!(button.windows(), (5, 50));

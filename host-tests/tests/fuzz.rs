@@ -14,8 +14,8 @@
 use contact_bounce::{
     scene::TwoBody, tiers::Approximations, tiers::AutoTiers, tiers::Averaged, tiers::Bodies,
     tiers::Count, tiers::MapImpacts, tiers::Time, Contact, Float, Frequency, Hereditary,
-    LearningState, Method, Mode, Nodes, Offset, Prediction, Restitution, Scene, State, Threshold,
-    Tolerance, Viscous, Windows,
+    LearnerPrior, LearningState, Method, Mode, Nodes, Offset, Prediction, Restitution, Scene,
+    State, Threshold, Tolerance, Viscous, Windows,
 };
 
 struct Rng(u64);
@@ -683,6 +683,7 @@ fn the_debouncers_on_random_samples_and_windows_report_alternating_edges() {
     for _ in 0..scenes() / 20 {
         let press = u16::try_from(rng.next() % 40).unwrap_or(0);
         let release = u16::try_from(rng.next() % 40).unwrap_or(0);
+        let tap = u16::try_from(rng.next() % 40).unwrap_or(0);
         let mode = if rng.next().is_multiple_of(2) {
             Mode::Confirm
         } else {
@@ -690,6 +691,8 @@ fn the_debouncers_on_random_samples_and_windows_report_alternating_edges() {
         };
         let windows = Windows::new(press, release, mode).unwrap_or_else(|_| unreachable!());
         let closed = rng.next().is_multiple_of(2);
+        let prior = LearnerPrior::new(press.max(1), release.max(1), 1 + tap)
+            .unwrap_or_else(|_| unreachable!());
         let (mut state, mut key) = (State::new(closed), LearningState::new(closed));
         let (mut level, mut learned_level) = (closed, closed);
         // Runs of random lengths, some a single sample (noise faster than the sampling).
@@ -703,15 +706,19 @@ fn the_debouncers_on_random_samples_and_windows_report_alternating_edges() {
                     assert_ne!(to, level, "the debouncer reported the level it had");
                     level = to;
                 }
-                if let Some(edge) = key.update(sample, &windows) {
+                if let Some(edge) = key.update(sample, &prior) {
                     let to = edge == contact_bounce::Edge::Press;
                     assert_ne!(to, learned_level, "the learner reported the level it had");
                     learned_level = to;
                 }
             }
+            // A level held as long as the fastest tap is always reported by its end.
+            if run >= u64::from(prior.fastest_tap()) {
+                assert_eq!(learned_level, sample, "a change of {run} samples was lost");
+            }
         }
-        let (p, r) = key.learned().windows(&windows);
-        assert!(p >= 1 && r >= 1 && p <= Windows::MAX_TICKS && r <= Windows::MAX_TICKS);
+        let (p, r) = key.learned().windows(&prior);
+        assert!(p >= 1 && r >= 1 && p <= prior.fastest_tap() && r <= prior.fastest_tap());
         assert_eq!(state.is_closed(), level);
         assert_eq!(key.is_closed(), learned_level);
     }

@@ -4,7 +4,7 @@
 //! no false edge, and after its warm-up its press window is at most 3/2 of the bounce plus one
 //! sample, and covers the bounce where the samples resolve it.
 
-use contact_bounce::{catalogue, learn::WARM_UP, LearningState, Mode, Windows};
+use contact_bounce::{catalogue, learn::WARM_UP, LearnerPrior, LearningState};
 use host_tests::reference::OneBody;
 use host_tests::traces::{Dwell, Trace};
 
@@ -23,7 +23,9 @@ fn the_learner_has_no_false_edge_and_learns_the_bounce_of_every_catalogue_switch
                 let period = bounce / divisions;
                 #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
                 let prior = (10.0 * divisions).ceil() as u16;
-                let prior = Windows::new(prior, prior, Mode::HoldOff).expect("in range");
+                // (a machine's switch, not a finger's: the fastest change to report is the
+                // prior's length)
+                let prior = LearnerPrior::new(prior, prior, prior).expect("in range");
                 let mut key = LearningState::new(false);
                 // Hold each level for the prior's length and more: no quick taps.
                 let hold = 3.0 * f64::from(prior.press()) * period;
