@@ -52,8 +52,8 @@ for (sw, kind), g in groups.items():
     print("| x%s | %s | %s | %d | %d | %s | %s | %s |" % (scale, sw, kind, learned["false_edges"], fewest, f(learned["latency_p99_s"]), f(best), f(learned["window_s"])))
 ' "$scale"; done)
 # Tapped like a key: every debouncer on seeded tap sequences spliced from the later tests.
-taps=$(run --taps)
-tapchecks=$(run --taps --format json | python3 -c '
+taps=$(run --taps --window 157e-3)
+tapchecks=$(run --taps --window 157e-3 --format json | python3 -c '
 import json, sys
 rows = [json.loads(l) for l in sys.stdin]
 groups = {}
@@ -74,10 +74,10 @@ print()
 print("Every switch and regime: " + ("the learner loses no tap, no row has both fewer missed taps and fewer false edges, and on the rocker and the control it has no false edge." if ok else "NOT every learned row holds (see the last column)."))
 ')
 # The push button in the README: the learner against the windows people use.
-tapreadme=$(run --taps --format json | python3 -c '
+tapreadme=$(run --taps --window 157e-3 --format json | python3 -c '
 import json, sys
 rows = [json.loads(l) for l in sys.stdin]
-names = [("learned", "learned"), ("qmk sym_eager_pk", "QMK 5 ms (eager)"), ("qmk sym_defer_pk", "QMK 5 ms (defer)"), ("bounce2 stable", "Bounce2 10 ms"), ("zephyr gpio-keys", "Zephyr 30 ms"), ("calibrated hold-off", "calibrated hold-off"), ("physics-prior hold-off", "157 ms prior, hold-off")]
+names = [("learned", "learned"), ("qmk sym_eager_pk", "QMK 5 ms (eager)"), ("qmk sym_defer_pk", "QMK 5 ms (defer)"), ("bounce2 stable", "Bounce2 10 ms"), ("zephyr gpio-keys", "Zephyr 30 ms"), ("calibrated hold-off", "calibrated hold-off"), ("physics-prior hold-off", "prior of the type, 31 ms, hold-off"), ("fixed 157.000 ms hold-off", "157 ms, hold-off")]
 print("| push button, 1,000 taps: missed / false edges | " + " | ".join(n for _, n in names) + " |")
 print("|---|" + "---:|" * len(names))
 by = {}
@@ -156,7 +156,7 @@ bounce-table replay --switch-type push-button --format json --time-scale 10 --mi
 bounce-table replay --switch-type push-button --format curve ../shared/data/bouncy-button-uno.jsonl
 bounce-table replay --switch-type push-button --period 1e-5 --window 180e-6 ../shared/data/bouncy-button-uno.jsonl
 bounce-table calibrate ../shared/data/bouncy-button-uno.jsonl
-bounce-table replay --taps --switch-type push-button ../shared/data/bouncy-button-uno.jsonl   # and --format json
+bounce-table replay --taps --window 157e-3 --switch-type push-button ../shared/data/bouncy-button-uno.jsonl   # and --format json
 bounce-table replay --taps --switch-type push-button --format json --period 1e-4 --prior 5e-3 ../shared/data/bouncy-button-uno.jsonl   # priors 5-157 ms, 1 and 0.1 ms
 \`\`\`
 
@@ -169,7 +169,8 @@ change. "false edges": reported edges beyond the one true edge of each test; lat
 first contact change to the first reported edge. The peers are re-implemented from their
 documentation at their defaults (\`bounce-table/src/replay.rs\` says how each works); debouncr
 is the crate itself. \`physics-prior\` is the window the switch's type gives without a capture
-(\`bounce-table/src/priors.rs\`: a survey of 18 hand-operated switches, whose worst is 157 ms).
+(\`bounce-table/src/priors.rs\`): the P99.9 of a survey of 18 hand-operated switches, whose
+worst bounced 157 ms, at most the fastest real tap (31 ms), so that a user can type with it.
 \`learned\` is the core's learning debouncer (\`LearningState\`): it starts from that prior at
 the switch's first test and learns online through every test in capture order, press and
 release, never seeing a test before it happens; it is scored on the same later tests as every
@@ -197,7 +198,9 @@ every 1 ms at one phase for all (\`bounce-table/src/taps.rs\` says how the taps 
 scored). Per tap: \`missed\`, no press reported between the previous tap's release and its own
 (a real press lost); \`false edges\`, presses beyond one and releases beyond one; \`correct\`,
 exactly one press and one release, in order. The learner starts from the switch type's prior
-(157 ms) and is told that no real tap is shorter than 31 ms.
+(31 ms) and is told that no real tap is shorter than 31 ms. \`fixed 157.000 ms\` is our
+debouncer with the survey's worst switch as its window, the type's prior before it was capped at
+the fastest tap.
 
 $taps
 
@@ -222,8 +225,8 @@ $tapreadme
 
 The push button's contact opens for 18-88 ms in the middle of about a quarter of its presses,
 and closes again for 14-33 ms after some releases: reversions as long as a human tap. A window
-that swallows them swallows real taps of that length too (the 157 ms prior and the calibrated
-windows lose up to 72 % of fast taps), and a window that keeps every tap lets the longer ones
+that swallows them swallows real taps of that length too (157 ms and the calibrated windows
+lose up to 72 % of fast taps), and a window that keeps every tap lets the longer ones
 through as false edges. The learner takes the second side of that trade, and says so
 (\`reverts_like_a_tap\`, the line below the rows).
 

@@ -37,7 +37,8 @@
 //! sampling period each needs, with the fastest tap in that period's samples
 //! ([`LearnerPrior::at_period`] takes the default, [`FASTEST_TAP_NS`]; a switch no hand
 //! operates takes the fastest change it must report). A period change is
-//! [`Learned::rescale`]d.
+//! [`Learned::rescale`]d. Taps faster than the fastest tap it is told are taken for the switch's
+//! own bounce, and can be lost: tell it the fastest tap its users make.
 
 use embedded_hal::digital::InputPin;
 

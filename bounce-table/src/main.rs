@@ -304,7 +304,13 @@ fn calibrate_main(options: &calibrate::Options) -> ExitCode {
             } else {
                 bounce_table::emit::Lang::C
             };
-            match calibrate::export(&groups, options.percentile, lang, &options.file) {
+            match calibrate::export(
+                &groups,
+                options.percentile,
+                options.min_tap,
+                lang,
+                &options.file,
+            ) {
                 Ok(text) => text,
                 Err(e) => {
                     eprintln!(
@@ -333,8 +339,14 @@ fn calibrate_main(options: &calibrate::Options) -> ExitCode {
                 }
             }
             let mut report = format!(
-                "# Summary\n\n{}\n## Description\n\n{}",
-                calibrate::summary(&groups, options.percentile, options.burst_gap),
+                "# Summary\n\n{}\n{}\n## Description\n\n{}",
+                calibrate::summary(
+                    &groups,
+                    options.percentile,
+                    options.burst_gap,
+                    options.min_tap
+                ),
+                taps::window_costs(&events, options),
                 calibrate::describe(&groups, options.resolution)
             );
             if skipped.total() > 0 {

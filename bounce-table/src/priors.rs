@@ -91,10 +91,19 @@ impl Prior {
         crate::calibrate::inverse(|t| self.cdf(t), q.clamp(0.0, 1.0 - 1e-12))
     }
 
-    /// The window a prior gives: its P99.9.
+    /// The P99.9 of the type's bounce: for hand-operated switches, the survey's worst switch.
     #[must_use]
     pub fn window(&self) -> f64 {
         self.quantile(PRIOR_PERCENTILE)
+    }
+
+    /// The window a user can type with: the P99.9, at most the fastest real tap `fastest_tap`
+    /// (s). A longer window swallows real taps (`docs/human-timing.md`); a switch that bounces
+    /// longer than a tap shows it as false edges, which the learner reports
+    /// (`reverts_like_a_tap`).
+    #[must_use]
+    pub fn window_in_use(&self, fastest_tap: f64) -> f64 {
+        self.window().min(fastest_tap)
     }
 }
 

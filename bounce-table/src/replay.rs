@@ -657,7 +657,7 @@ impl Line {
 }
 
 /// The calibrated window (s) of each switch and kind: `calibrate` on the earlier tests
-/// (`s.split`), their times multiplied by `s.time_scale`.
+/// (`s.split`), their times multiplied by `s.time_scale`, at most `c.min_tap` where given.
 #[must_use]
 pub fn calibrated(
     events: &[Event],
@@ -681,9 +681,10 @@ pub fn calibrated(
             })
             .collect();
         let refs: Vec<_> = earlier.iter().collect();
+        let w = window(&refs, c.percentile).recommended();
         out.insert(
             (switch.to_owned(), kind),
-            window(&refs, c.percentile).recommended(),
+            c.min_tap.map_or(w, |cap| w.min(cap)),
         );
     }
     out
@@ -737,7 +738,7 @@ pub fn run(events: &[Event], c: &calibrate::Options, s: &Settings) -> Result<Vec
             format!("{switch}: a calibrated window does not fit {} samples of --period {}: sample less often", Windows::MAX_TICKS, s.period)
         })?;
         if let Some(prior) = priors::from_switch_name(switch).or(s.switch_type) {
-            let w = prior.window() * s.time_scale;
+            let w = (prior.window() * s.time_scale).min(s.fastest_tap);
             rows.extend(ours("physics-prior", w, w, s.period, kind).ok_or_else(|| {
                 format!("{switch}: the prior's window does not fit {} samples of --period {}: sample less often", Windows::MAX_TICKS, s.period)
             })?);
@@ -939,7 +940,9 @@ pub fn learning_curves(events: &[Event], s: &Settings) -> Result<Vec<(String, Le
     for switch in switches {
         if let Some(prior) = priors::from_switch_name(switch).or(s.switch_type) {
             let all: Vec<&Event> = events.iter().filter(|e| e.switch == switch).collect();
-            let from = s.learner_prior.unwrap_or(prior.window() * s.time_scale);
+            let from = s
+                .learner_prior
+                .unwrap_or((prior.window() * s.time_scale).min(s.fastest_tap));
             let l = learned(&all, from, s).map_err(|e| format!("{switch}: {e}"))?;
             out.push((switch.to_owned(), l));
         }

@@ -135,7 +135,7 @@ fn exported_windows_compile_as_c_and_rust() {
     let header = dir.join("windows.h");
     std::fs::write(
         &header,
-        bounce_table::calibrate::export(&groups, 0.99, Lang::C, "synthetic.jsonl").unwrap(),
+        bounce_table::calibrate::export(&groups, 0.99, None, Lang::C, "synthetic.jsonl").unwrap(),
     )
     .unwrap();
     let c = dir.join("use.c");
@@ -150,7 +150,8 @@ fn exported_windows_compile_as_c_and_rust() {
     common::compile_c(&c, &dir);
     let rs = dir.join("windows.rs");
     let constants =
-        bounce_table::calibrate::export(&groups, 0.99, Lang::Rust, "synthetic.jsonl").unwrap();
+        bounce_table::calibrate::export(&groups, 0.99, None, Lang::Rust, "synthetic.jsonl")
+            .unwrap();
     std::fs::write(
         &rs,
         format!("{constants}\npub fn w() -> u64 {{ SYNTHETIC_PRESS_WINDOW_NS }}\n"),
@@ -175,7 +176,7 @@ fn exported_windows_compile_as_c_and_rust() {
         .collect();
     let long_groups = group(&long, 1e-12, GAP);
     let refused =
-        bounce_table::calibrate::export(&long_groups, 0.99, Lang::C, "long.csv").unwrap_err();
+        bounce_table::calibrate::export(&long_groups, 0.99, None, Lang::C, "long.csv").unwrap_err();
     assert!(
         refused.contains("beyond a 64-bit count of nanoseconds"),
         "{refused}"
@@ -565,7 +566,7 @@ fn a_later_half_that_never_bounced_is_said_so_not_divided_by() {
         section: None,
     }));
     let groups = group(&events, 1e-12, GAP);
-    let text = bounce_table::calibrate::summary(&groups, 0.99, GAP);
+    let text = bounce_table::calibrate::summary(&groups, 0.99, GAP, None);
     assert!(
         text.contains("covers 10 of the 10 later presses, none of which bounced")
             && !text.contains("inf times"),

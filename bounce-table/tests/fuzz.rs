@@ -356,7 +356,8 @@ fn check_events(what: &str, input: &str, events: &[Event]) {
     no_panic("calibrate", input, || {
         let groups = bounce_table::calibrate::group(events, 3e-6, 5e-3);
         let _ = bounce_table::calibrate::describe(&groups, 3e-6);
-        let _ = bounce_table::calibrate::summary(&groups, 99.0, 5e-3);
+        let _ = bounce_table::calibrate::summary(&groups, 99.0, 5e-3, None);
+        let _ = bounce_table::calibrate::summary(&groups, 99.0, 5e-3, Some(31e-3));
     });
 }
 

@@ -48,6 +48,7 @@ fn every_switch_regime_and_debouncer_gets_a_row_with_exactly_its_keys() {
     let path = write("two.jsonl", &text);
     let out = Command::new(BIN)
         .args(["replay", "--taps", "--tap-count", "200", "--format", "json"])
+        .args(["--window", "157e-3"])
         .arg(&path)
         .args(["--switch-type", "push-button"])
         .output()
@@ -80,16 +81,16 @@ fn every_switch_regime_and_debouncer_gets_a_row_with_exactly_its_keys() {
         assert_eq!(have, keys, "{r}");
         assert_eq!(r["taps"], 200, "{r}");
     }
-    // Three switches (the control too), four regimes, 16 debouncers: ours (calibrated and
-    // prior, both modes; the learner) and the 11 peers.
-    assert_eq!(rows.len(), 3 * 4 * 16);
+    // Three switches (the control too), four regimes, 18 debouncers: ours (calibrated, prior
+    // and the fixed window, each in both modes; the learner) and the 11 peers.
+    assert_eq!(rows.len(), 3 * 4 * 18);
     for switch in ["reopening", "clean", "no-bounce control"] {
         for regime in ["typing", "fast-taps", "double-click", "hold"] {
             let of: Vec<_> = rows
                 .iter()
                 .filter(|r| r["switch"] == switch && r["regime"] == regime)
                 .collect();
-            assert_eq!(of.len(), 16, "{switch} {regime}");
+            assert_eq!(of.len(), 18, "{switch} {regime}");
             let learned = of.iter().find(|r| r["debouncer"] == "learned").unwrap();
             // A 6 ms reopening, less than a tap: the learner's window covers it from the start
             // (the prior, at most a tap), keeps every tap and passes no false edge.
@@ -104,13 +105,20 @@ fn every_switch_regime_and_debouncer_gets_a_row_with_exactly_its_keys() {
                     .unwrap();
                 assert_eq!(qmk["false_edges"], 400, "{qmk}");
             }
-            // The 157 ms prior in confirm mode waits longer than any fast tap: it loses taps.
+            // The type's prior is at most the fastest tap: in hold-off it loses no tap.
+            let prior = of
+                .iter()
+                .find(|r| r["debouncer"] == "physics-prior hold-off")
+                .unwrap();
+            assert_eq!(prior["window_s"], 31e-3, "{prior}");
+            assert_eq!(prior["missed"], 0, "{prior}");
+            // 157 ms, the survey's worst switch, swallows fast taps even in hold-off mode.
             if regime == "fast-taps" {
-                let prior = of
+                let long = of
                     .iter()
-                    .find(|r| r["debouncer"] == "physics-prior confirm")
+                    .find(|r| r["debouncer"] == "fixed 157.000 ms hold-off")
                     .unwrap();
-                assert!(prior["missed"].as_u64().unwrap() > 100, "{prior}");
+                assert!(long["missed"].as_u64().unwrap() > 100, "{long}");
             }
         }
     }
@@ -181,4 +189,50 @@ fn the_learner_keeps_every_tap_from_any_prior_at_1_ms_and_0_1_ms() {
             }
         }
     }
+}
+
+#[test]
+fn calibrate_caps_its_windows_at_the_fastest_tap_and_says_what_it_costs() {
+    // Presses that reopen from 40 to 100 ms: a window of about 100 ms without the cap, 31 ms
+    // with.
+    let path = write("long.jsonl", &capture("long", 20, Some((40e-3, 100e-3))));
+    let run = |args: &[&str]| {
+        let out = Command::new(BIN)
+            .arg("calibrate")
+            .args(args)
+            .arg(&path)
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let header = run(&["--format", "c", "--min-tap", "31e-3"]);
+    assert!(header.contains("LONG_PRESS_WINDOW_NS 31000000ull"), "{header}");
+    let uncapped = run(&["--format", "c"]);
+    assert!(!uncapped.contains("LONG_PRESS_WINDOW_NS 31000000ull"), "{uncapped}");
+    let report = run(&["--min-tap", "31e-3"]);
+    assert!(report.contains("Capped at 31.000 ms"), "{report}");
+    assert!(report.contains("20 of the 20 presses bounce longer"), "{report}");
+    // The report's tap costs (missed / false edges per regime): the capped window keeps every
+    // tap and lets the reopening through as false edges; without the cap the window swallows
+    // fast taps.
+    assert!(report.contains("## Tapped like a key"), "{report}");
+    let cells = |text: &str| -> Vec<(u64, u64)> {
+        let row = text
+            .lines()
+            .find(|l| l.starts_with("| long |"))
+            .unwrap_or_else(|| panic!("no row: {text}"));
+        row.split('|')
+            .filter_map(|c| {
+                let (a, b) = c.trim().split_once(" / ")?;
+                Some((a.parse().ok()?, b.parse().ok()?))
+            })
+            .collect()
+    };
+    let capped = cells(&report);
+    assert_eq!(capped.len(), 4, "{report}");
+    assert!(capped.iter().all(|&(missed, _)| missed == 0), "{capped:?}");
+    assert!(capped[0].1 > 0, "{capped:?}");
+    let plain = cells(&run(&[]));
+    assert!(plain[1].0 > 100, "fast taps: {plain:?}");
 }

@@ -16,6 +16,7 @@ use crate::output::{comment, identifier, window_ns};
 pub fn export(
     groups: &Groups<'_>,
     percentile: f64,
+    cap: Option<f64>,
     lang: Lang,
     source: &str,
 ) -> Result<String, String> {
@@ -30,6 +31,11 @@ pub fn export(
         comment(source),
         percentile * 100.0
     )));
+    if let Some(cap) = cap {
+        out.push_str(&lang.comment(&format!(
+            "Each window at most {cap:e} s (--min-tap: no real tap is shorter); a bounce longer than that comes through as false edges."
+        )));
+    }
     out.push_str(&lang.open(guard));
     out.push('\n');
     for ((switch, kind), d) in groups {
@@ -42,7 +48,7 @@ pub fn export(
                 fitted.events
             ));
         }
-        let w = fitted.recommended();
+        let w = cap.map_or(fitted.recommended(), |c| fitted.recommended().min(c));
         let ns = window_ns(w).ok_or_else(|| {
             format!(
                 "{switch} {}: the window, {w:e} s, is beyond a 64-bit count of nanoseconds",

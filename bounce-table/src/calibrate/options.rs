@@ -48,6 +48,8 @@ pub struct Options {
     pub events: bool,
     /// Also fit the real-contact models (slow: tens of seconds).
     pub contact_models: bool,
+    /// No real tap is shorter than this (s): windows are capped at it (`--min-tap`).
+    pub min_tap: Option<f64>,
 }
 
 /// Reads the capture into events, leaving out what cannot be one press or release (see

@@ -339,11 +339,12 @@ pub fn by_section(groups: &Groups<'_>) -> String {
 /// it rests on, how the same rule held on the capture's later half when fitted on its earlier
 /// half, and the share of late bursts.
 #[must_use]
-pub fn summary(groups: &Groups<'_>, percentile: f64, burst_gap: f64) -> String {
+pub fn summary(groups: &Groups<'_>, percentile: f64, burst_gap: f64, cap: Option<f64>) -> String {
     let mut out = String::new();
     for ((switch, kind), d) in groups {
         let refs: Vec<&capture::Description> = d.iter().collect();
         let w = window(&refs, percentile);
+        let capped = |x: f64| cap.map_or(x, |c| x.min(c));
         let Cover {
             window: half,
             covered,
@@ -384,22 +385,46 @@ pub fn summary(groups: &Groups<'_>, percentile: f64, burst_gap: f64) -> String {
             capture::Kind::Press => "presses",
             capture::Kind::Release => "releases",
         };
+        // Capped: the later events the capped earlier-half window still covers.
+        let covered = match cap {
+            Some(c) if half.recommended() > c => refs
+                .get(earlier_count(refs.len(), 0.5)..)
+                .unwrap_or(&[])
+                .iter()
+                .filter(|x| x.bounce <= c)
+                .count(),
+            _ => covered,
+        };
         // A later half that never bounced has no largest bounce to compare with.
         let held = if later_max > 0.0 {
             format!(
                 "covers {covered} of the {later} later {kinds} and is {:.2} times the largest of them, {}",
-                half.recommended() / later_max,
+                capped(half.recommended()) / later_max,
                 time(later_max)
             )
         } else {
             format!("covers {covered} of the {later} later {kinds}, none of which bounced")
         };
+        let cap_text = match cap {
+            Some(c) if w.recommended() > c => {
+                let longer: Vec<f64> = d.iter().map(|x| x.bounce).filter(|&b| b > c).collect();
+                format!(
+                    " Capped at {} (--min-tap: the fit asks {}): {} of the {} {kinds} bounce longer, up to {}, and a window a tap long lets the rest of their bounce through as false edges.",
+                    time(c),
+                    time(w.recommended()),
+                    longer.len(),
+                    d.len(),
+                    time(longer.iter().copied().fold(0.0, f64::max))
+                )
+            }
+            _ => String::new(),
+        };
         out.push_str(&format!(
-            "- {switch} {}: use {} ({what}, {} events); the same rule fitted on the earlier half ({}) {held}; {late_text}.{}\n",
+            "- {switch} {}: use {} ({what}, {} events); the same rule fitted on the earlier half ({}) {held}; {late_text}.{}{cap_text}\n",
             kind.name(),
-            time(w.recommended()),
+            time(capped(w.recommended())),
             d.len(),
-            time(half.recommended()),
+            time(capped(half.recommended())),
             w.reason().map_or_else(String::new, |r| format!(" Far beyond the capture: {r}.")),
         ));
     }
