@@ -10,6 +10,9 @@
 //! extra scans at the same time that must change nothing; and a quiet minute at the end that
 //! must change nothing either.
 //!
+//! Bounce2 (both modes, its `Bounce2.cpp`), debouncr and the two `gpio-keys`: a tap with a
+//! bouncing press and release, with the edges their documented rules give, derived by hand.
+//!
 //! ZMK: its integrator (`zmk_debounce_update` in ZMK's `debounce.c`) compares the counter with
 //! the threshold before adding the scan's elapsed milliseconds, so at 5 ms a key flips on the
 //! 6th differing scan at 1 ms, the 4th at 2 ms and the 3rd at 4 ms. Checked on traces derived
@@ -335,5 +338,49 @@ fn zmk_s_integrator_flips_at_zmk_s_scan_at_1_2_and_4_ms() {
                 "{period} ms scans, pins {pins:?}"
             );
         }
+    }
+}
+
+/// The edges (ms, pressed) `name` reports on a contact that changes at `changes` (ms; closed
+/// after the first), sampled every millisecond on the millisecond.
+fn timed(name: &str, changes: &[f64]) -> Vec<(u32, bool)> {
+    let trace = bounce_table::replay::Trace {
+        closed_before: false,
+        changes: changes.iter().map(|t| t * 1e-3).collect(),
+    };
+    let mut row = peers(1e-3)
+        .into_iter()
+        .find(|r| r.name == name)
+        .unwrap_or_else(|| panic!("no peer {name}"));
+    bounce_table::replay::edges(&mut row.kernel, &trace, 0.0, 1e-3, 0.1)
+        .into_iter()
+        .map(|(t, closed)| {
+            #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+            let ms = (t * 1e3).round() as u32;
+            (ms, closed)
+        })
+        .collect()
+}
+
+#[test]
+fn bounce2_debouncr_and_gpio_keys_report_where_their_rules_say() {
+    // Closed 0-3 ms, open 3-5, closed 5-20 (the press), open 20-21, closed 21-22, open from
+    // 22 (the release).
+    let tap = [0.0, 3.0, 5.0, 20.0, 21.0, 22.0];
+    let want: [(&str, &[(u32, bool)]); 6] = [
+        // Bounce2's default: a reading held for the interval (10 ms) since the last change.
+        ("bounce2 stable", &[(15, true), (32, false)]),
+        // Bounce2's BOUNCE_LOCK_OUT: at once, then nothing for the interval.
+        ("bounce2 lock-out", &[(0, true), (20, false)]),
+        // debouncr: four (eight) equal samples in a row.
+        ("debouncr 4 samples", &[(8, true), (25, false)]),
+        ("debouncr 8 samples", &[(12, true), (29, false)]),
+        // gpio-keys: each edge restarts the timer; at its end the pin is read. Zephyr's 30 ms
+        // never expires while the tap lasts, and at its end the pin reads open again.
+        ("linux gpio-keys", &[(10, true), (27, false)]),
+        ("zephyr gpio-keys", &[]),
+    ];
+    for (name, edges) in want {
+        assert_eq!(timed(name, &tap), edges, "{name}");
     }
 }

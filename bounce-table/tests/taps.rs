@@ -203,16 +203,29 @@ fn calibrate_caps_its_windows_at_the_fastest_tap_and_says_what_it_costs() {
             .arg(&path)
             .output()
             .unwrap();
-        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         String::from_utf8(out.stdout).unwrap()
     };
     let header = run(&["--format", "c", "--min-tap", "31e-3"]);
-    assert!(header.contains("LONG_PRESS_WINDOW_NS 31000000ull"), "{header}");
+    assert!(
+        header.contains("LONG_PRESS_WINDOW_NS 31000000ull"),
+        "{header}"
+    );
     let uncapped = run(&["--format", "c"]);
-    assert!(!uncapped.contains("LONG_PRESS_WINDOW_NS 31000000ull"), "{uncapped}");
+    assert!(
+        !uncapped.contains("LONG_PRESS_WINDOW_NS 31000000ull"),
+        "{uncapped}"
+    );
     let report = run(&["--min-tap", "31e-3"]);
     assert!(report.contains("Capped at 31.000 ms"), "{report}");
-    assert!(report.contains("20 of the 20 presses bounce longer"), "{report}");
+    assert!(
+        report.contains("20 of the 20 presses bounce longer"),
+        "{report}"
+    );
     // The report's tap costs (missed / false edges per regime): the capped window keeps every
     // tap and lets the reopening through as false edges; without the cap the window swallows
     // fast taps.
