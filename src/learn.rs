@@ -337,7 +337,7 @@ const ACTIVE: u8 = 2;
 const EVENT: u8 = 4;
 
 /// One key's learning debouncer state (see [`crate::learn`]): what it learned and the event in
-/// progress. 26 bytes; integer-only per sample.
+/// progress. 24 bytes; integer-only per sample.
 ///
 /// ```
 /// use contact_bounce::{Edge, LearnerPrior, LearningState};
@@ -372,8 +372,6 @@ pub struct LearningState {
     previous: u16,
     /// Samples the contact had read this event's level before its edge was reported.
     lead: u16,
-    /// This event's window.
-    guard: u16,
     /// LEVEL (reported closed), ACTIVE (the event is still watched), EVENT (an edge has been
     /// reported since the key was settled: there is an event to learn from).
     flags: u8,
@@ -413,7 +411,6 @@ impl LearningState {
             bounce: 0,
             previous: u16::MAX,
             lead: u16::MAX,
-            guard: 0,
             flags: if closed { LEVEL } else { 0 },
         }
     }
@@ -490,7 +487,11 @@ impl LearningState {
             return None;
         }
         self.run = self.run.saturating_add(1);
-        if active && self.since < self.guard && self.run < prior.fastest_tap {
+        // The event's window: what was learned of its kind changes only when an edge is
+        // reported, so it is the window set at this event's edge.
+        let (press, release) = self.learned.windows(&prior);
+        let window = if level { press } else { release };
+        if active && self.since < window && self.run < prior.fastest_tap {
             return None;
         }
         Some(self.report(closed, prior))
@@ -519,10 +520,9 @@ impl LearningState {
             // A real edge's event ends here.
             self.learn_event();
         }
-        let (press, release) = self.learned.windows(&prior);
-        // The window runs from the report. An edge reported late (its change began inside the
-        // window before) can hold a real tap's next change back by as much: late, never lost.
-        self.guard = if closed { press } else { release };
+        // The new event's window (read from what was learned, in `watch`) runs from this report.
+        // An edge reported late (its change began inside the window before) can hold a real
+        // tap's next change back by as much: late, never lost.
         self.previous = self.since;
         self.lead = self.run.saturating_sub(1);
         self.since = 0;
@@ -945,7 +945,7 @@ mod tests {
 
     #[test]
     fn a_key_is_a_few_bytes() {
-        assert_eq!(core::mem::size_of::<LearningState>(), 26);
+        assert_eq!(core::mem::size_of::<LearningState>(), 24);
         assert_eq!(core::mem::size_of::<Learned>(), 12);
         assert_eq!(core::mem::size_of::<LearnerPrior>(), 6);
     }
