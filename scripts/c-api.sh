@@ -84,7 +84,7 @@ avr-size "$tmp/uno.elf"
 no_panic "$tmp/uno.elf" avr-nm
 timeout 300 simavr -m atmega328p -f 16000000 "$tmp/uno.elf" > "$tmp/raw" 2>&1 || true
 sed -e 's/\x1b\[[0-9;]*m//g' "$tmp/raw" | grep -v -e '^Loaded ' -e '^$' | sed -e 's/\.$//' > "$tmp/uno"
-{ grep -E ' tb1v | restitution-averaged | closed-preload |^pin ' "$tmp/rust"; echo done; } > "$tmp/want"
+{ grep -E ' tb1v | restitution-averaged | closed-preload |^pin |^learner ' "$tmp/rust"; echo done; } > "$tmp/want"
 if ! diff -u "$tmp/want" "$tmp/uno"; then
   echo "FAIL: the C API on the Uno printed other lines than the host" >&2
   exit 1
@@ -113,6 +113,7 @@ calls=(
   "\`cb_predict_auto_exact\`|out_e = cb_predict_auto_exact(&sw, in[0], &p); out_f = p.end_time;"
   "\`cb_predict_auto\`|out_e = cb_predict_auto(&sw, in[0], &p); out_f = p.end_time;"
   "the debouncer (\`cb_windows_init\`, \`cb_pin_init\`, \`cb_pin_update\`)|out_e = cb_windows_init(&w, (uint32_t)in[0], (uint32_t)in[1], CB_MODE_CONFIRM); out_e += cb_pin_init(&pin, in[2] > 0.0f); out_e += cb_pin_update(&pin, in[3] > 0.0f, &w);"
+  "the learner (\`cb_learner_prior_init\`, \`cb_learner_init\`, \`cb_learner_update\`, \`cb_learner_flags\`, \`cb_learner_save\`, \`cb_learner_restore\`)|out_e = cb_learner_prior_init(&lp, (uint16_t)in[0], (uint16_t)in[1], (uint16_t)in[2]); out_e += cb_learner_init(&key, in[3] > 0.0f); out_e += cb_learner_update(&key, in[4] > 0.0f, &lp); out_e += cb_learner_flags(&key, &lp); out_e += cb_learner_save(&key, &saved); out_e += cb_learner_restore(&key, in[5] > 0.0f, &saved);"
 )
 one() { # C statements -> text data bss of the minimal program around them
   cat > "$tmp/one.c" <<C_PROGRAM
@@ -128,7 +129,10 @@ int main(void) {
     cb_estimate est;
     cb_windows w;
     cb_pin pin;
-    (void)sw; (void)s; (void)p; (void)est; (void)w; (void)pin;
+    cb_learner_prior lp;
+    cb_learner key;
+    cb_learned saved;
+    (void)sw; (void)s; (void)p; (void)est; (void)w; (void)pin; (void)lp; (void)key; (void)saved;
     $1
     for (;;) {
     }

@@ -216,6 +216,16 @@ impl Tail {
         }
     }
 
+    const fn from_words(counts: u16, bounce: u16, reversion: u16) -> Self {
+        let [events, long_reversions] = counts.to_le_bytes();
+        Self {
+            events,
+            long_reversions,
+            bounce,
+            reversion,
+        }
+    }
+
     const fn valid(self) -> bool {
         self.bounce <= Windows::MAX_TICKS && self.reversion <= Windows::MAX_TICKS
     }
@@ -419,6 +429,48 @@ impl LearningState {
     #[must_use]
     pub const fn learned(&self) -> Learned {
         self.learned
+    }
+
+    /// The state as twelve 16-bit words, to keep it where a Rust type cannot go (a C struct,
+    /// backup RAM): what it learned (each kind: events and long reversions, bounce, reversion),
+    /// then the event in progress.
+    #[must_use]
+    pub const fn to_words(&self) -> [u16; 12] {
+        let (p, r) = (self.learned.press, self.learned.release);
+        [
+            u16::from_le_bytes([p.events, p.long_reversions]),
+            p.bounce,
+            p.reversion,
+            u16::from_le_bytes([r.events, r.long_reversions]),
+            r.bounce,
+            r.reversion,
+            self.since,
+            self.run,
+            self.bounce,
+            self.previous,
+            self.lead,
+            u16::from_le_bytes([self.flags, 0]),
+        ]
+    }
+
+    /// The state from [`LearningState::to_words`]. Any words are a valid state: every field is
+    /// a saturating counter or a flag, and every window is at most the fastest tap, so words not
+    /// made by `to_words` cannot make an update fail, panic or lose a change that lasts a tap;
+    /// at worst the key starts mid-event.
+    #[must_use]
+    pub const fn from_words(w: [u16; 12]) -> Self {
+        Self {
+            learned: Learned {
+                press: Tail::from_words(w[0], w[1], w[2]),
+                release: Tail::from_words(w[3], w[4], w[5]),
+            },
+            since: w[6],
+            run: w[7],
+            bounce: w[8],
+            previous: w[9],
+            lead: w[10],
+            flags: w[11].to_le_bytes()[0] & (LEVEL | ACTIVE | EVENT),
+        }
     }
 
     /// The debounced contact: closed or open.
@@ -941,6 +993,38 @@ mod tests {
         assert!(edges >= 1);
         let (press, release) = key.learned().windows(&p);
         assert!(press <= p.fastest_tap() && release <= p.fastest_tap());
+    }
+
+    #[test]
+    fn the_state_round_trips_through_words_and_any_words_are_a_state() {
+        let p = prior(31, 31);
+        let mut key = LearningState::new(false);
+        let mut press = [true; 40];
+        press[2] = false;
+        for _ in 0..3 {
+            cycle(&mut key, p, &press, 50);
+        }
+        // Mid-event too.
+        key.update(true, &p);
+        assert_eq!(LearningState::from_words(key.to_words()), key);
+        // Arbitrary words: updates never panic, and a level held a tap is reported.
+        let mut x: u32 = 0x9E37_79B9;
+        for _ in 0..2000 {
+            let mut w = [0_u16; 12];
+            for word in &mut w {
+                x ^= x << 13;
+                x ^= x >> 17;
+                x ^= x << 5;
+                *word = x.to_le_bytes()[0].into();
+                *word |= u16::from(x.to_le_bytes()[1]) << 8;
+            }
+            let mut key = LearningState::from_words(w);
+            let target = !key.is_closed();
+            for _ in 0..p.fastest_tap() {
+                key.update(target, &p);
+            }
+            assert_eq!(key.is_closed(), target, "{w:?}");
+        }
     }
 
     #[test]

@@ -122,5 +122,50 @@ fn main() -> Result<(), Error> {
             }
         }
     }
+    learner_lines()?;
+    Ok(())
+}
+
+/// `learner_lines` of `examples/c/lines.h`, through the core's learner.
+fn learner_lines() -> Result<(), contact_bounce::Error> {
+    let prior = contact_bounce::LearnerPrior::at_period(31, 31, 1_000_000)?;
+    let mut key = contact_bounce::LearningState::new(false);
+    let mut x: u32 = 2_463_534_242;
+    let mut next = || {
+        x ^= x << 13;
+        x ^= x >> 17;
+        x ^= x << 5;
+        x
+    };
+    let mut i = 0;
+    for k in 0..80 {
+        let down = 31 + next() % 40;
+        let up = 31 + next() % 40;
+        for j in 0..down + up {
+            let closed = if j < down {
+                !(j == 1 || (k % 5 == 4 && (8..20).contains(&j)))
+            } else {
+                j - down == 2
+            };
+            if let Some(edge) = key.update(closed, &prior) {
+                let edge = match edge {
+                    Edge::Press => "press",
+                    Edge::Release => "release",
+                };
+                println!("learner {i} {edge}");
+            }
+            i += 1;
+        }
+    }
+    let (press, release) = key.learned().windows(&prior);
+    let flags = u8::from(key.learned().reverts_like_a_tap(&prior));
+    println!("learner windows {press} {release} flags {flags}");
+    let saved: Vec<String> = key
+        .learned()
+        .to_bytes()
+        .iter()
+        .map(ToString::to_string)
+        .collect();
+    println!("learner saved {}", saved.join(" "));
     Ok(())
 }

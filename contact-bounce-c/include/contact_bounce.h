@@ -27,6 +27,13 @@
 // The longest window in samples.
 #define CB_MAX_WINDOW_TICKS 32767
 
+// The fastest real tap by default, nanoseconds: 16 taps a second, 31 ms down and 31 ms up.
+#define CB_FASTEST_TAP_NS 31000000
+
+// `cb_learner_flags`: the switch reverts for at least half the fastest tap, so it will also
+// revert for as long as a tap, and those reversions are reported as taps would be.
+#define CB_LEARNER_REVERTS_LIKE_A_TAP 1
+
 // What a sample debounced to.
 enum cb_edge
 #if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
@@ -288,6 +295,31 @@ typedef struct cb_pin {
   uint16_t state;
 } cb_pin;
 
+// What a learning debouncer starts from, in samples: the prior press and release windows and
+// the fastest real tap (a change that lasts that long is always reported; no window is
+// longer). Set it with `cb_learner_prior_init` or `cb_learner_prior_at_period`.
+typedef struct cb_learner_prior {
+  // Prior press window, samples (1 to `CB_MAX_WINDOW_TICKS`).
+  uint16_t press;
+  // Prior release window, samples (1 to `CB_MAX_WINDOW_TICKS`).
+  uint16_t release;
+  // The fastest real tap, samples (1 to `CB_MAX_WINDOW_TICKS`).
+  uint16_t fastest_tap;
+} cb_learner_prior;
+
+// One key's learning debouncer: 24 bytes. Set it with `cb_learner_init` or
+// `cb_learner_restore`.
+typedef struct cb_learner {
+  // The state; not to be read or written by the caller.
+  uint16_t state[12];
+} cb_learner;
+
+// What a learner has learned, to save (for example in EEPROM) and restore: 12 bytes.
+typedef struct cb_learned {
+  // The bytes, as `cb_learner_save` writes them.
+  uint8_t bytes[12];
+} cb_learned;
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -420,6 +452,57 @@ cb_edge cb_pin_update(struct cb_pin *pin, bool closed, const struct cb_windows *
 
 // Whether the pin is debounced closed.
 bool cb_pin_is_closed(const struct cb_pin *pin);
+
+// A learner's prior from windows and a fastest tap in samples. `CB_ERR_NOT_POSITIVE` for a 0,
+// `CB_ERR_OUT_OF_RANGE` above `CB_MAX_WINDOW_TICKS` (both naming `CB_PARAM_TIME`); `out` is
+// written only on success.
+cb_error cb_learner_prior_init(struct cb_learner_prior *out,
+                               uint16_t press,
+                               uint16_t release,
+                               uint16_t fastest_tap);
+
+// A learner's prior from windows in samples of `period_ns` nanoseconds, with the default
+// fastest tap (`CB_FASTEST_TAP_NS`) in whole samples of that period. Errors as
+// `cb_learner_prior_init`, and `CB_PARAM_SAMPLE_PERIOD` for a period of 0 or one longer than
+// the tap; `out` is written only on success.
+cb_error cb_learner_prior_at_period(struct cb_learner_prior *out,
+                                    uint16_t press,
+                                    uint16_t release,
+                                    uint32_t period_ns);
+
+// A key settled closed (`closed` true) or open, with nothing learned.
+cb_error cb_learner_init(struct cb_learner *learner, bool closed);
+
+// Feeds one sample (`closed`: the contact reads closed) and returns the edge it debounces;
+// `CB_EDGE_ERROR` (the learner unchanged) for a NULL argument or a prior not made by
+// `cb_learner_prior_init`.
+cb_edge cb_learner_update(struct cb_learner *learner,
+                          bool closed,
+                          const struct cb_learner_prior *prior);
+
+// Whether the key is debounced closed (false for NULL).
+bool cb_learner_is_closed(const struct cb_learner *learner);
+
+// The press and release windows the learner uses now with `prior` (samples); `press` and
+// `release` are written only on success.
+cb_error cb_learner_windows(const struct cb_learner *learner,
+                            const struct cb_learner_prior *prior,
+                            uint16_t *press,
+                            uint16_t *release);
+
+// The learner's flags with `prior` (`CB_LEARNER_REVERTS_LIKE_A_TAP`); 0 for a NULL argument
+// or a bad prior.
+uint8_t cb_learner_flags(const struct cb_learner *learner, const struct cb_learner_prior *prior);
+
+// What the learner has learned, as 12 bytes to save.
+cb_error cb_learner_save(const struct cb_learner *learner, struct cb_learned *out);
+
+// A key settled closed (`closed` true) or open that has learned what `cb_learner_save` saved.
+// `CB_ERR_OUT_OF_RANGE` (naming `CB_PARAM_TIME`) for bytes no learner saved (erased or
+// corrupted storage): the learner is then unchanged.
+cb_error cb_learner_restore(struct cb_learner *learner,
+                            bool closed,
+                            const struct cb_learned *saved);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -23,6 +23,7 @@
 #![allow(non_camel_case_types)]
 
 use contact_bounce::{
+    learn::Learned,
     scene::{AnySign, OffsetSign, Preload, Regime},
     tiers::preload_restitution_bounce_seconds,
     tiers::preload_viscous_bounce_seconds,
@@ -31,8 +32,9 @@ use contact_bounce::{
     tiers::Tier,
     tiers::DEFAULT_MAX_IMPACTS,
     tiers::EXACT_MAX_IMPACTS,
-    Contact, Edge, Error, Frequency, Margin, Method, Mode, Nodes, Offset, Parameter, Prediction,
-    Reason, Restitution, Scene, State, Threshold, Tolerance, Viscous, Window, Windows,
+    Contact, Edge, Error, Frequency, LearnerPrior, LearningState, Margin, Method, Mode, Nodes,
+    Offset, Parameter, Prediction, Reason, Restitution, Scene, State, Threshold, Tolerance,
+    Viscous, Window, Windows,
 };
 
 /// A panic cannot happen (the core and this crate have no panicking path); on a bare-metal
@@ -987,4 +989,228 @@ pub extern "C" fn cb_pin_update(
 #[no_mangle]
 pub extern "C" fn cb_pin_is_closed(pin: Option<&cb_pin>) -> bool {
     pin.is_some_and(|p| State::from_bits(p.state).is_closed())
+}
+
+/// What a learning debouncer starts from, in samples: the prior press and release windows and
+/// the fastest real tap (a change that lasts that long is always reported; no window is
+/// longer). Set it with `cb_learner_prior_init` or `cb_learner_prior_at_period`.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct cb_learner_prior {
+    /// Prior press window, samples (1 to `CB_MAX_WINDOW_TICKS`).
+    pub press: u16,
+    /// Prior release window, samples (1 to `CB_MAX_WINDOW_TICKS`).
+    pub release: u16,
+    /// The fastest real tap, samples (1 to `CB_MAX_WINDOW_TICKS`).
+    pub fastest_tap: u16,
+}
+
+/// The fastest real tap by default, nanoseconds: 16 taps a second, 31 ms down and 31 ms up.
+pub const CB_FASTEST_TAP_NS: u32 = 31_000_000;
+const _: () = assert!(CB_FASTEST_TAP_NS == contact_bounce::learn::FASTEST_TAP_NS);
+
+fn learner_prior(p: cb_learner_prior) -> Result<LearnerPrior, cb_error> {
+    LearnerPrior::new(p.press, p.release, p.fastest_tap).map_err(cb_error::from)
+}
+
+/// A learner's prior from windows and a fastest tap in samples. `CB_ERR_NOT_POSITIVE` for a 0,
+/// `CB_ERR_OUT_OF_RANGE` above `CB_MAX_WINDOW_TICKS` (both naming `CB_PARAM_TIME`); `out` is
+/// written only on success.
+#[allow(unsafe_code)]
+#[no_mangle]
+pub extern "C" fn cb_learner_prior_init(
+    out: Option<&mut cb_learner_prior>,
+    press: u16,
+    release: u16,
+    fastest_tap: u16,
+) -> cb_error {
+    let Some(out) = out else {
+        return NULL;
+    };
+    match LearnerPrior::new(press, release, fastest_tap) {
+        Ok(_) => {
+            *out = cb_learner_prior {
+                press,
+                release,
+                fastest_tap,
+            };
+            OK
+        }
+        Err(e) => e.into(),
+    }
+}
+
+/// A learner's prior from windows in samples of `period_ns` nanoseconds, with the default
+/// fastest tap (`CB_FASTEST_TAP_NS`) in whole samples of that period. Errors as
+/// `cb_learner_prior_init`, and `CB_PARAM_SAMPLE_PERIOD` for a period of 0 or one longer than
+/// the tap; `out` is written only on success.
+#[allow(unsafe_code)]
+#[no_mangle]
+pub extern "C" fn cb_learner_prior_at_period(
+    out: Option<&mut cb_learner_prior>,
+    press: u16,
+    release: u16,
+    period_ns: u32,
+) -> cb_error {
+    let Some(out) = out else {
+        return NULL;
+    };
+    match LearnerPrior::at_period(press, release, period_ns) {
+        Ok(p) => {
+            *out = cb_learner_prior {
+                press: p.press(),
+                release: p.release(),
+                fastest_tap: p.fastest_tap(),
+            };
+            OK
+        }
+        Err(e) => e.into(),
+    }
+}
+
+/// One key's learning debouncer: 24 bytes. Set it with `cb_learner_init` or
+/// `cb_learner_restore`.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct cb_learner {
+    /// The state; not to be read or written by the caller.
+    pub state: [u16; 12],
+}
+
+/// What a learner has learned, to save (for example in EEPROM) and restore: 12 bytes.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct cb_learned {
+    /// The bytes, as `cb_learner_save` writes them.
+    pub bytes: [u8; 12],
+}
+
+/// `cb_learner_flags`: the switch reverts for at least half the fastest tap, so it will also
+/// revert for as long as a tap, and those reversions are reported as taps would be.
+pub const CB_LEARNER_REVERTS_LIKE_A_TAP: u8 = 1;
+
+/// A key settled closed (`closed` true) or open, with nothing learned.
+#[allow(unsafe_code)]
+#[no_mangle]
+pub extern "C" fn cb_learner_init(learner: Option<&mut cb_learner>, closed: bool) -> cb_error {
+    match learner {
+        Some(l) => {
+            l.state = LearningState::new(closed).to_words();
+            OK
+        }
+        None => NULL,
+    }
+}
+
+/// Feeds one sample (`closed`: the contact reads closed) and returns the edge it debounces;
+/// `CB_EDGE_ERROR` (the learner unchanged) for a NULL argument or a prior not made by
+/// `cb_learner_prior_init`.
+#[allow(unsafe_code)]
+#[no_mangle]
+pub extern "C" fn cb_learner_update(
+    learner: Option<&mut cb_learner>,
+    closed: bool,
+    prior: Option<&cb_learner_prior>,
+) -> cb_edge {
+    let (Some(learner), Some(prior)) = (learner, prior) else {
+        return cb_edge::CB_EDGE_ERROR;
+    };
+    let Ok(prior) = learner_prior(*prior) else {
+        return cb_edge::CB_EDGE_ERROR;
+    };
+    let mut state = LearningState::from_words(learner.state);
+    let edge = state.update(closed, &prior);
+    learner.state = state.to_words();
+    match edge {
+        None => cb_edge::CB_EDGE_NONE,
+        Some(Edge::Press) => cb_edge::CB_EDGE_PRESS,
+        Some(Edge::Release) => cb_edge::CB_EDGE_RELEASE,
+    }
+}
+
+/// Whether the key is debounced closed (false for NULL).
+#[allow(unsafe_code)]
+#[no_mangle]
+pub extern "C" fn cb_learner_is_closed(learner: Option<&cb_learner>) -> bool {
+    learner.is_some_and(|l| LearningState::from_words(l.state).is_closed())
+}
+
+/// The press and release windows the learner uses now with `prior` (samples); `press` and
+/// `release` are written only on success.
+#[allow(unsafe_code)]
+#[no_mangle]
+pub extern "C" fn cb_learner_windows(
+    learner: Option<&cb_learner>,
+    prior: Option<&cb_learner_prior>,
+    press: Option<&mut u16>,
+    release: Option<&mut u16>,
+) -> cb_error {
+    let (Some(l), Some(p), Some(press), Some(release)) = (learner, prior, press, release) else {
+        return NULL;
+    };
+    match learner_prior(*p) {
+        Ok(p) => {
+            (*press, *release) = LearningState::from_words(l.state).learned().windows(&p);
+            OK
+        }
+        Err(e) => e,
+    }
+}
+
+/// The learner's flags with `prior` (`CB_LEARNER_REVERTS_LIKE_A_TAP`); 0 for a NULL argument
+/// or a bad prior.
+#[allow(unsafe_code)]
+#[no_mangle]
+pub extern "C" fn cb_learner_flags(
+    learner: Option<&cb_learner>,
+    prior: Option<&cb_learner_prior>,
+) -> u8 {
+    match (learner, prior.map(|p| learner_prior(*p))) {
+        (Some(l), Some(Ok(p)))
+            if LearningState::from_words(l.state)
+                .learned()
+                .reverts_like_a_tap(&p) =>
+        {
+            CB_LEARNER_REVERTS_LIKE_A_TAP
+        }
+        _ => 0,
+    }
+}
+
+/// What the learner has learned, as 12 bytes to save.
+#[allow(unsafe_code)]
+#[no_mangle]
+pub extern "C" fn cb_learner_save(
+    learner: Option<&cb_learner>,
+    out: Option<&mut cb_learned>,
+) -> cb_error {
+    match (learner, out) {
+        (Some(l), Some(out)) => {
+            out.bytes = LearningState::from_words(l.state).learned().to_bytes();
+            OK
+        }
+        _ => NULL,
+    }
+}
+
+/// A key settled closed (`closed` true) or open that has learned what `cb_learner_save` saved.
+/// `CB_ERR_OUT_OF_RANGE` (naming `CB_PARAM_TIME`) for bytes no learner saved (erased or
+/// corrupted storage): the learner is then unchanged.
+#[allow(unsafe_code)]
+#[no_mangle]
+pub extern "C" fn cb_learner_restore(
+    learner: Option<&mut cb_learner>,
+    closed: bool,
+    saved: Option<&cb_learned>,
+) -> cb_error {
+    let (Some(l), Some(saved)) = (learner, saved) else {
+        return NULL;
+    };
+    match Learned::from_bytes(saved.bytes) {
+        Ok(learned) => {
+            l.state = LearningState::restore(closed, learned).to_words();
+            OK
+        }
+        Err(e) => e.into(),
+    }
 }

@@ -109,6 +109,40 @@ static void bad_inputs(void) {
         fprintf(stderr, "FAIL bad windows to cb_pin_update\n");
         failures++;
     }
+    cb_learner_prior prior;
+    cb_learner key;
+    cb_learned saved;
+    uint16_t press = 0, release = 0;
+    expect(cb_learner_prior_init(NULL, 31, 31, 31), CB_ERR_NULL, CB_PARAM_POINTER, "NULL learner prior");
+    expect(cb_learner_prior_init(&prior, 0, 31, 31), CB_ERR_NOT_POSITIVE, CB_PARAM_TIME, "learner prior of 0");
+    expect(cb_learner_prior_init(&prior, 31, 31, 0), CB_ERR_NOT_POSITIVE, CB_PARAM_TIME, "fastest tap of 0");
+    expect(cb_learner_prior_init(&prior, 40000, 31, 31), CB_ERR_OUT_OF_RANGE, CB_PARAM_TIME, "learner prior too long");
+    expect(cb_learner_prior_at_period(&prior, 31, 31, 0), CB_ERR_NOT_POSITIVE, CB_PARAM_SAMPLE_PERIOD, "period of 0");
+    expect(cb_learner_prior_at_period(&prior, 31, 31, 40000000u), CB_ERR_OUT_OF_RANGE, CB_PARAM_SAMPLE_PERIOD, "period longer than a tap");
+    expect(cb_learner_init(NULL, false), CB_ERR_NULL, CB_PARAM_POINTER, "NULL learner");
+    expect(cb_learner_prior_init(&prior, 31, 31, 31), CB_OK, CB_PARAM_NONE, "learner prior");
+    expect(cb_learner_init(&key, false), CB_OK, CB_PARAM_NONE, "learner");
+    if (cb_learner_update(NULL, true, &prior) != CB_EDGE_ERROR || cb_learner_update(&key, true, NULL) != CB_EDGE_ERROR) {
+        fprintf(stderr, "FAIL NULL to cb_learner_update is not CB_EDGE_ERROR\n");
+        failures++;
+    }
+    prior.fastest_tap = 0; /* written by hand, not by cb_learner_prior_init */
+    if (cb_learner_update(&key, true, &prior) != CB_EDGE_ERROR || cb_learner_is_closed(&key) || cb_learner_flags(&key, &prior) != 0) {
+        fprintf(stderr, "FAIL bad prior to cb_learner_update\n");
+        failures++;
+    }
+    expect(cb_learner_windows(&key, &prior, &press, &release), CB_ERR_NOT_POSITIVE, CB_PARAM_TIME, "learner windows, bad prior");
+    expect(cb_learner_windows(&key, NULL, &press, &release), CB_ERR_NULL, CB_PARAM_POINTER, "learner windows, NULL");
+    expect(cb_learner_save(&key, NULL), CB_ERR_NULL, CB_PARAM_POINTER, "NULL saved bytes");
+    expect(cb_learner_restore(&key, false, NULL), CB_ERR_NULL, CB_PARAM_POINTER, "NULL bytes to restore");
+    memset(saved.bytes, 0xFF, sizeof saved.bytes); /* erased EEPROM */
+    expect(cb_learner_restore(&key, false, &saved), CB_ERR_OUT_OF_RANGE, CB_PARAM_TIME, "erased bytes to restore");
+    expect(cb_learner_save(&key, &saved), CB_OK, CB_PARAM_NONE, "save");
+    expect(cb_learner_restore(&key, true, &saved), CB_OK, CB_PARAM_NONE, "restore");
+    if (!cb_learner_is_closed(&key) || cb_learner_is_closed(NULL)) {
+        fprintf(stderr, "FAIL cb_learner_is_closed after a restore\n");
+        failures++;
+    }
     if (strcmp(cb_parameter_name(200), "unknown") != 0 || strcmp(cb_parameter_name(CB_PARAM_MASS), "mass") != 0) {
         fprintf(stderr, "FAIL cb_parameter_name\n");
         failures++;
@@ -190,6 +224,7 @@ int main(void) {
         switch_lines(put, i);
     }
     debouncer_lines(put);
+    learner_lines(put);
     bad_inputs();
     bounce_seconds();
     if (failures != 0) {

@@ -35,6 +35,7 @@ int main(void) {
         switch_lines(put, i);
     }
     debouncer_lines(put);
+    learner_lines(put);
     return 0;
 }
 

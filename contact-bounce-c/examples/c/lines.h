@@ -135,4 +135,63 @@ static inline void debouncer_lines(put_line put) {
     }
 }
 
+
+/* A recorded tap sequence through the learning debouncer, from the type's prior at 1 ms samples
+ * (31 samples, the fastest tap): 80 taps of 31-70 samples down and up (xorshift32 from
+ * 2463534242), each press bouncing at its second sample, every fifth press opening again from
+ * sample 8 to 19 (the switch's own reversion), each release closing again at its third sample.
+ * "learner i EDGE" per edge, then the windows, the flags and the saved bytes. */
+static inline uint32_t tap_next(uint32_t *x) {
+    *x ^= *x << 13;
+    *x ^= *x >> 17;
+    *x ^= *x << 5;
+    return *x;
+}
+
+static inline void learner_lines(put_line put) {
+    cb_learner_prior prior;
+    cb_learner key;
+    if (cb_learner_prior_at_period(&prior, 31, 31, 1000000u) != CB_OK || cb_learner_init(&key, false) != CB_OK) {
+        put("learner init failed");
+        return;
+    }
+    uint32_t x = 2463534242u, i = 0;
+    char line[64];
+    for (uint32_t k = 0; k < 80; k++) {
+        uint32_t down = 31 + tap_next(&x) % 40, up = 31 + tap_next(&x) % 40;
+        for (uint32_t j = 0; j < down + up; j++, i++) {
+            bool closed = j < down ? !(j == 1 || (k % 5 == 4 && j >= 8 && j < 20)) : (j - down == 2);
+            cb_edge edge = cb_learner_update(&key, closed, &prior);
+            if (edge != CB_EDGE_NONE) {
+                char *at = put_str(line, "learner ");
+                at = put_u32(at, i);
+                at = put_str(at, edge == CB_EDGE_PRESS ? " press" : edge == CB_EDGE_RELEASE ? " release" : " error");
+                *at = '\0';
+                put(line);
+            }
+        }
+    }
+    uint16_t press = 0, release = 0;
+    cb_learned saved;
+    if (cb_learner_windows(&key, &prior, &press, &release) != CB_OK || cb_learner_save(&key, &saved) != CB_OK) {
+        put("learner windows failed");
+        return;
+    }
+    char *at = put_str(line, "learner windows ");
+    at = put_u32(at, press);
+    at = put_str(at, " ");
+    at = put_u32(at, release);
+    at = put_str(at, " flags ");
+    at = put_u32(at, cb_learner_flags(&key, &prior));
+    *at = '\0';
+    put(line);
+    at = put_str(line, "learner saved");
+    for (uint32_t b = 0; b < 12; b++) {
+        at = put_str(at, " ");
+        at = put_u32(at, saved.bytes[b]);
+    }
+    *at = '\0';
+    put(line);
+}
+
 #endif

@@ -36,6 +36,7 @@ int main(void) {
         closed_preload_line(uart_put, i);
     }
     debouncer_lines(uart_put);
+    learner_lines(uart_put);
     uart_put("done");
     /* Interrupts off and sleep: simavr ends the run. */
     __asm__ volatile("cli");
