@@ -2,7 +2,8 @@
 //! core): raw f32 bit patterns and edge values into every function, called as C calls them
 //! (NULL as `None`, any integer where C passes one). Each call must return `CB_OK` with sound
 //! numbers, or an error whose code and parameter are values of `cb_code` and `cb_parameter`;
-//! the debouncer takes any state and any windows without failing. `FUZZ_SCENES` inputs (CI:
+//! the debouncer takes any state and any windows without failing, and the learner any state,
+//! prior and saved bytes. `FUZZ_SCENES` inputs (CI:
 //! 10,000; `scripts/fuzz.sh`: millions).
 
 use contact_bounce_c::{
@@ -15,6 +16,11 @@ use contact_bounce_c::{
     cb_preload_seconds_map, cb_seconds_to_ticks, cb_switch, cb_switch_check, cb_window_ticks,
     cb_windows, cb_windows_init, CB_HAS_COUNT, CB_HAS_END, CB_HAS_EXPECTED_ERROR,
     CB_HAS_LAST_ABOVE,
+};
+use contact_bounce_c::{
+    cb_learned, cb_learner, cb_learner_flags, cb_learner_init, cb_learner_is_closed,
+    cb_learner_prior, cb_learner_prior_init, cb_learner_restore, cb_learner_save,
+    cb_learner_update, cb_learner_windows,
 };
 
 struct Rng(u64);
@@ -392,4 +398,72 @@ fn the_debouncer_takes_any_state_windows_and_mode() {
         let name = cb_parameter_name(p);
         assert!(!name.is_null());
     }
+}
+
+#[test]
+fn the_learner_takes_any_state_prior_and_saved_bytes() {
+    let mut rng = Rng::seeded(0x2545_F491_4F6C_DD1D);
+    for _ in 0..scenes() * 10 {
+        let bits = rng.next();
+        let mut prior = cb_learner_prior {
+            press: (bits & 0xFFFF) as u16,
+            release: ((bits >> 16) & 0xFFFF) as u16,
+            fastest_tap: ((bits >> 32) & 0xFFFF) as u16,
+        };
+        let mut key = cb_learner { state: [0; 12] };
+        for (i, word) in key.state.iter_mut().enumerate() {
+            *word = (rng.next() >> (i % 4)) as u16;
+        }
+        let before = key;
+        let edge = cb_learner_update(Some(&mut key), bits >> 63 == 1, Some(&prior)) as u8;
+        assert!(edge <= 3, "{edge}");
+        // A prior that cb_learner_prior_init refuses gives CB_EDGE_ERROR, flags 0 and an error
+        // from cb_learner_windows, and leaves the learner alone.
+        let given = prior;
+        let init = cb_learner_prior_init(
+            Some(&mut prior),
+            given.press,
+            given.release,
+            given.fastest_tap,
+        );
+        let (mut press, mut release) = (0, 0);
+        let windows = cb_learner_windows(
+            Some(&key),
+            Some(&given),
+            Some(&mut press),
+            Some(&mut release),
+        );
+        if init.code() != 0 {
+            assert_eq!(edge, 3, "{given:?}");
+            assert_eq!(key, before);
+            assert_eq!(cb_learner_flags(Some(&key), Some(&given)), 0);
+            assert_eq!(windows, init);
+        } else {
+            assert!(edge < 3, "{given:?}");
+            assert_eq!(windows.code(), 0);
+            assert!(press <= given.fastest_tap && release <= given.fastest_tap);
+        }
+        let _ = cb_learner_is_closed(Some(&key));
+        // Any 12 bytes to restore: CB_OK and the same bytes saved back, or out of range and
+        // the learner unchanged.
+        let mut saved = cb_learned { bytes: [0; 12] };
+        for b in &mut saved.bytes {
+            *b = rng.next() as u8;
+        }
+        let kept = key;
+        let restored = cb_learner_restore(Some(&mut key), bits & 1 == 1, Some(&saved));
+        if restored.code() == 0 {
+            let mut again = cb_learned { bytes: [0; 12] };
+            assert_eq!(cb_learner_save(Some(&key), Some(&mut again)).code(), 0);
+            assert_eq!(again, saved);
+        } else {
+            assert_eq!(restored.code(), cb_code::CB_ERR_OUT_OF_RANGE as u8);
+            assert_eq!(key, kept);
+        }
+    }
+    assert_eq!(
+        cb_learner_init(None, true).code(),
+        cb_code::CB_ERR_NULL as u8
+    );
+    assert!(!cb_learner_is_closed(None));
 }
