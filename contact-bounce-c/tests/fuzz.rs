@@ -3,8 +3,7 @@
 //! (NULL as `None`, any integer where C passes one). Each call must return `CB_OK` with sound
 //! numbers, or an error whose code and parameter are values of `cb_code` and `cb_parameter`;
 //! the debouncer takes any state and any windows without failing, and the learner any state,
-//! prior and saved bytes. `FUZZ_SCENES` inputs (CI:
-//! 10,000; `scripts/fuzz.sh`: millions).
+//! prior and saved bytes. `FUZZ_SCENES` inputs (CI: 10,000; `scripts/fuzz.sh`: millions).
 
 use contact_bounce_c::{
     cb_bounce_seconds_averaged, cb_bounce_seconds_closed, cb_bounce_seconds_exact,
