@@ -970,7 +970,7 @@ pub fn curve_csv(curves: &[(String, Learning)]) -> String {
     out
 }
 
-fn json_number(x: Option<f64>) -> String {
+pub(crate) fn json_number(x: Option<f64>) -> String {
     x.map_or_else(|| "null".to_owned(), |v| format!("{v:e}"))
 }
 
@@ -1042,48 +1042,63 @@ pub fn plot(lines: &[&Line]) -> String {
         .filter(|l| !is_ours(l))
         .filter_map(point)
         .collect();
-    // The front: no other row has both fewer false edges and a lower latency. Rows that tie
-    // on a point are named together.
-    let mut all: Vec<(&&Line, (f64, f64))> = lines
-        .iter()
-        .filter_map(|l| point(l).map(|p| (l, p)))
-        .collect();
-    all.sort_by(|a, b| a.1 .0.total_cmp(&b.1 .0).then(a.1 .1.total_cmp(&b.1 .1)));
-    let mut front: Vec<(f64, f64)> = Vec::new();
-    let mut names: Vec<String> = Vec::new();
-    for (l, p) in &all {
-        match front.last() {
-            Some(last) if *last == *p => {
-                if let Some(n) = names.last_mut() {
-                    n.push_str(", ");
-                    n.push_str(&l.debouncer);
-                }
-            }
-            Some(last) if p.1 >= last.1 => {}
-            _ => {
-                front.push(*p);
-                names.push(l.debouncer.clone());
-            }
-        }
-    }
+    // The front: no other row has both fewer false edges and a lower latency.
+    let (front, names) = pareto_front(
+        lines
+            .iter()
+            .filter_map(|l| point(l).map(|p| (l.debouncer.as_str(), p))),
+    );
     let (switch, kind) = lines
         .first()
         .map_or(("", "press"), |l| (l.switch.as_str(), l.kind.name()));
-    let mut named = Series::new("", "#d62728", Style::Dots, front.clone());
-    named.names = names;
     Plot {
         title: format!("{switch} {kind}: false edges against latency"),
         x: Axis::log("latency P99", Quantity::Time),
         y: Axis::linear("false edges", Quantity::Count),
         series: vec![
-            Series::new("Pareto front", "#d62728", Style::Steps, front),
+            Series::new("Pareto front", "#d62728", Style::Steps, front.clone()),
             Series::new("ours", "#2ca02c", Style::Dots, ours),
             Series::new("peers", "#1f77b4", Style::Dots, theirs),
-            named,
+            named(front, names),
         ],
         markers: Vec::new(),
     }
     .svg()
+}
+
+/// The Pareto front of named points (x, y), both smaller better: the points no other has both
+/// a smaller x and a smaller y, in increasing x, each with its names (rows that tie on a point
+/// are named together).
+pub(crate) fn pareto_front<'a>(
+    points: impl Iterator<Item = (&'a str, (f64, f64))>,
+) -> (Vec<(f64, f64)>, Vec<String>) {
+    let mut all: Vec<(&str, (f64, f64))> = points.collect();
+    all.sort_by(|a, b| a.1 .0.total_cmp(&b.1 .0).then(a.1 .1.total_cmp(&b.1 .1)));
+    let mut front: Vec<(f64, f64)> = Vec::new();
+    let mut names: Vec<String> = Vec::new();
+    for (name, p) in all {
+        match front.last() {
+            Some(last) if *last == p => {
+                if let Some(n) = names.last_mut() {
+                    n.push_str(", ");
+                    n.push_str(name);
+                }
+            }
+            Some(last) if p.1 >= last.1 => {}
+            _ => {
+                front.push(p);
+                names.push(name.to_owned());
+            }
+        }
+    }
+    (front, names)
+}
+
+/// The front's points with their names written beside them.
+pub(crate) fn named(front: Vec<(f64, f64)>, names: Vec<String>) -> Series {
+    let mut s = Series::new("", "#d62728", Style::Dots, front);
+    s.names = names;
+    s
 }
 
 /// How `replay` prints its rows.

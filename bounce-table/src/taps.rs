@@ -490,6 +490,13 @@ pub fn rows(calibrated: (f64, f64), prior: f64, s: &replay::Settings) -> Result<
     Ok(rows)
 }
 
+/// The seed of the `j`-th regime's sequences from the replay's `seed`: the same taps and phase
+/// for every switch and debouncer of a regime.
+fn regime_seed(seed: u64, j: usize) -> u64 {
+    seed.wrapping_mul(0x0001_0000_0001)
+        .wrapping_add(u64::try_from(j).unwrap_or(u64::MAX))
+}
+
 /// The tap replay on `events`: per switch (and the control), per regime, every debouncer.
 ///
 /// # Errors
@@ -516,9 +523,7 @@ pub fn run(
                 .unwrap_or(0.0)
         };
         for (j, regime) in Regime::ALL.into_iter().enumerate() {
-            // The same taps and phase for every switch and debouncer of a regime.
-            let seed = t.seed.wrapping_mul(0x0001_0000_0001).wrapping_add(j as u64);
-            let seq = sequence(&w, regime, t.count, seed);
+            let seq = sequence(&w, regime, t.count, regime_seed(t.seed, j));
             for mut row in rows((both(Kind::Press), both(Kind::Release)), prior, s)
                 .map_err(|e| format!("{}: {e}", w.switch))?
             {
@@ -541,10 +546,6 @@ pub fn run(
     Ok(lines)
 }
 
-fn json_number(x: Option<f64>) -> String {
-    x.map_or_else(|| "null".to_owned(), |v| format!("{v:e}"))
-}
-
 /// One JSON object per row, with exactly the keys `switch`, `regime`, `debouncer`, `window_s`,
 /// `taps`, `missed`, `false_edges`, `correct`, `press_latency_p50_s`, `press_latency_p99_s`,
 /// `release_latency_p99_s`.
@@ -558,14 +559,14 @@ pub fn json(lines: &[TapLine]) -> String {
                 serde_json::Value::from(l.switch.as_str()),
                 l.regime.name(),
                 serde_json::Value::from(l.debouncer.as_str()),
-                json_number(l.window),
+                replay::json_number(l.window),
                 l.score.taps,
                 l.score.missed,
                 l.score.false_edges,
                 l.score.correct,
-                json_number(l.press_latency(0.5)),
-                json_number(l.press_latency(0.99)),
-                json_number(l.release_latency(0.99)),
+                replay::json_number(l.press_latency(0.5)),
+                replay::json_number(l.press_latency(0.99)),
+                replay::json_number(l.release_latency(0.99)),
             )
         })
         .collect()
@@ -646,39 +647,20 @@ pub fn plot(lines: &[&TapLine]) -> String {
         .filter(|l| !is_ours(l))
         .map(|l| point(l))
         .collect();
-    let mut all: Vec<(&TapLine, (f64, f64))> = lines.iter().map(|l| (*l, point(l))).collect();
-    all.sort_by(|a, b| a.1 .0.total_cmp(&b.1 .0).then(a.1 .1.total_cmp(&b.1 .1)));
-    let mut front: Vec<(f64, f64)> = Vec::new();
-    let mut names: Vec<String> = Vec::new();
-    for (l, p) in &all {
-        match front.last() {
-            Some(last) if *last == *p => {
-                if let Some(n) = names.last_mut() {
-                    n.push_str(", ");
-                    n.push_str(&l.debouncer);
-                }
-            }
-            Some(last) if p.1 >= last.1 => {}
-            _ => {
-                front.push(*p);
-                names.push(l.debouncer.clone());
-            }
-        }
-    }
+    let (front, names) =
+        replay::pareto_front(lines.iter().map(|l| (l.debouncer.as_str(), point(l))));
     let (switch, regime) = lines
         .first()
         .map_or(("", "typing"), |l| (l.switch.as_str(), l.regime.name()));
-    let mut named = Series::new("", "#d62728", Style::Dots, front.clone());
-    named.names = names;
     Plot {
         title: format!("{switch}, {regime}: missed taps against false edges"),
         x: Axis::linear("false edges", Quantity::Count),
         y: Axis::linear("missed taps", Quantity::Count),
         series: vec![
-            Series::new("Pareto front", "#d62728", Style::Steps, front),
+            Series::new("Pareto front", "#d62728", Style::Steps, front.clone()),
             Series::new("ours", "#2ca02c", Style::Dots, ours),
             Series::new("peers", "#1f77b4", Style::Dots, theirs),
-            named,
+            replay::named(front, names),
         ],
         markers: Vec::new(),
     }
@@ -731,8 +713,7 @@ pub fn window_costs(events: &[Event], c: &calibrate::Options) -> String {
         let (p, r) = (both(Kind::Press), both(Kind::Release));
         let mut cells = Vec::new();
         for (j, regime) in Regime::ALL.into_iter().enumerate() {
-            let seed = t.seed.wrapping_mul(0x0001_0000_0001).wrapping_add(j as u64);
-            let seq = sequence(&w, regime, t.count, seed);
+            let seq = sequence(&w, regime, t.count, regime_seed(t.seed, j));
             let cell = replay::ours("calibrated", p, r, s.period, Kind::Press)
                 .and_then(|rows| rows.into_iter().next())
                 .map_or_else(
