@@ -4,9 +4,10 @@
 #    checks that bad inputs (NULL, NaN, out of range) return their error codes and prints the
 #    lines of every tier and of the debouncer, which must be those the Rust core prints
 #    (examples/lines.rs); the header also compiles as C++;
-#  - on a Cortex-M4F under QEMU: examples/c/cortex_m.c (no C library), built with
-#    arm-none-eabi-gcc against the library built for thumbv7em-none-eabihf, prints every tier's
-#    and the debouncer's lines, which must be the host's;
+#  - on a Cortex-M4F and a Cortex-M0 under QEMU: examples/c/cortex_m.c (no C library), built
+#    with arm-none-eabi-gcc against the library built for thumbv7em-none-eabihf and
+#    thumbv6m-none-eabi, prints every tier's, the debouncer's and the learner's lines, which must
+#    be the host's;
 #  - on the Arduino Uno: examples/c/uno.c, built with avr-gcc against the library built for
 #    avr-none (nightly), runs in simavr and must print the host's lean-path and debouncer lines.
 # Neither firmware may link panic code (the library and the core have no panicking path).
@@ -36,18 +37,12 @@ c++ -std=c++11 -Wall -Werror -I"$C/include" "$tmp/cpp.cpp" target/release/libcon
 "$tmp/cpp"
 echo "ok: the header compiles and links as C++"
 
-# Cortex-M4F under QEMU, C with no C library (arm-none-eabi-gcc from Debian's packages).
+# Cortex-M4F and Cortex-M0 under QEMU, C with no C library (arm-none-eabi-gcc from Debian's
+# packages). QEMU has no Cortex-M0+ machine; the M0's microbit runs the same ARMv6-M code.
 if ! command -v arm-none-eabi-gcc >/dev/null || ! command -v qemu-system-arm >/dev/null; then
   apt-get update -qq
   DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends gcc-arm-none-eabi qemu-system-arm >/dev/null
 fi
-rustup target add thumbv7em-none-eabihf >/dev/null 2>&1
-cargo build --quiet --profile firmware -p contact-bounce-c --target thumbv7em-none-eabihf
-arm-none-eabi-gcc -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16 -Os -std=gnu99 \
-  -Wall -Wextra -Werror -ffreestanding -ffunction-sections -fdata-sections -nostdlib -Wa,--noexecstack \
-  -I"$C/include" -I"$C/examples/c" "$C/examples/c/cortex_m.c" -T "$C/examples/c/cortex_m.ld" \
-  -Wl,--gc-sections target/thumbv7em-none-eabihf/firmware/libcontact_bounce_c.a -o "$tmp/cortex_m.elf"
-arm-none-eabi-size "$tmp/cortex_m.elf"
 # The C examples format nothing through Rust: panic code in them would be the library's.
 no_panic() {
   if "$2" "$1" | grep -q 'core9panicking'; then
@@ -55,14 +50,27 @@ no_panic() {
     exit 1
   fi
 }
-no_panic "$tmp/cortex_m.elf" arm-none-eabi-nm
-timeout 300 qemu-system-arm -cpu cortex-m4 -machine mps2-an386 -nographic \
-  -semihosting-config enable=on,target=native -kernel "$tmp/cortex_m.elf" > "$tmp/cortex_m"
-if ! diff -u "$tmp/rust" "$tmp/cortex_m"; then
-  echo "FAIL: the C API on the Cortex-M4F printed other lines than the Rust core on the host" >&2
-  exit 1
-fi
-echo "ok: the C API on the Cortex-M4F under QEMU ($(wc -l < "$tmp/cortex_m") lines, as on the host)"
+cortex_m() { # name, Rust target, QEMU cpu, QEMU machine, gcc's target flags...
+  local name=$1 target=$2 cpu=$3 machine=$4
+  shift 4
+  rustup target add "$target" >/dev/null 2>&1
+  cargo build --quiet --profile firmware -p contact-bounce-c --target "$target"
+  arm-none-eabi-gcc "$@" -mthumb -Os -std=gnu99 \
+    -Wall -Wextra -Werror -ffreestanding -ffunction-sections -fdata-sections -nostdlib -Wa,--noexecstack \
+    -I"$C/include" -I"$C/examples/c" "$C/examples/c/cortex_m.c" -T "$C/examples/c/cortex_m.ld" \
+    -Wl,--gc-sections "target/$target/firmware/libcontact_bounce_c.a" -lgcc -o "$tmp/$cpu.elf"
+  arm-none-eabi-size "$tmp/$cpu.elf"
+  no_panic "$tmp/$cpu.elf" arm-none-eabi-nm
+  timeout 300 qemu-system-arm -cpu "$cpu" -machine "$machine" -nographic \
+    -semihosting-config enable=on,target=native -kernel "$tmp/$cpu.elf" > "$tmp/$cpu"
+  if ! diff -u "$tmp/rust" "$tmp/$cpu"; then
+    echo "FAIL: the C API on the $name printed other lines than the Rust core on the host" >&2
+    exit 1
+  fi
+  echo "ok: the C API on the $name under QEMU ($(wc -l < "$tmp/$cpu") lines, as on the host)"
+}
+cortex_m Cortex-M4F thumbv7em-none-eabihf cortex-m4 mps2-an386 -mcpu=cortex-m4 -mfloat-abi=hard -mfpu=fpv4-sp-d16
+cortex_m Cortex-M0 thumbv6m-none-eabi cortex-m0 microbit -mcpu=cortex-m0plus
 
 # shellcheck source=scripts/avr-toolchain.sh
 source scripts/avr-toolchain.sh

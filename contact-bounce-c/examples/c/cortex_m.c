@@ -1,7 +1,9 @@
-/* The C API on a Cortex-M4F under QEMU (mps2-an386), in C, with no C library: every tier on the
- * switches of switches.h and the debouncer, printed through semihosting. scripts/c-api.sh builds
- * it with arm-none-eabi-gcc against libcontact_bounce_c.a built for thumbv7em-none-eabihf and
- * compares its lines with the Rust core's on the host. */
+/* The C API on a Cortex-M4F (QEMU's mps2-an386) and a Cortex-M0 (QEMU's microbit, for the M0+ of
+ * the SAMD21 and RP2040: the same ARMv6-M instructions), in C, with no C library: every tier on the
+ * switches of switches.h, the debouncer and the learner, printed through semihosting.
+ * scripts/c-api.sh builds it with arm-none-eabi-gcc against libcontact_bounce_c.a built for
+ * thumbv7em-none-eabihf and thumbv6m-none-eabi, and compares its lines with the Rust core's on
+ * the host. */
 #include "lines.h"
 
 /* Semihosting: operation in r0, argument in r1, then bkpt 0xAB; the result in r0. */
@@ -48,9 +50,11 @@ void reset(void) {
     for (uint32_t *dst = &_sbss; dst < &_ebss;) {
         *dst++ = 0;
     }
+#if defined(__ARM_FP)
     /* The FPU on (CPACR: full access to CP10 and CP11) before any float instruction. */
     *(volatile uint32_t *)0xE000ED88u |= 0xFu << 20;
     __asm__ volatile("dsb\n isb");
+#endif
     main();
     semihost(0x18, (const void *)0x20026u); /* SYS_EXIT, ADP_Stopped_ApplicationExit: status 0 */
     for (;;) {
