@@ -100,7 +100,8 @@ fi
 echo "ok: the C API on the Uno in simavr ($(wc -l < "$tmp/want") lines, as on the host)"
 
 # What fits the Uno from C: each entry point alone in a minimal program (its inputs read from
-# volatiles, so nothing is folded away; its outputs stored to them), linked as uno.c is. The
+# volatiles, floats or integers as it takes them, so nothing is folded away; its outputs stored
+# to them), linked as uno.c is. The
 # library's share is the program's flash (text and initialised data) minus that of the same
 # program with no call. RAM is the data and bss before any stack.
 calls=(
@@ -120,14 +121,15 @@ calls=(
   "\`cb_predict_exact\`|out_e = cb_predict_exact(&sw, &p); out_f = p.end_time;"
   "\`cb_predict_auto_exact\`|out_e = cb_predict_auto_exact(&sw, in[0], &p); out_f = p.end_time;"
   "\`cb_predict_auto\`|out_e = cb_predict_auto(&sw, in[0], &p); out_f = p.end_time;"
-  "the debouncer (\`cb_windows_init\`, \`cb_pin_init\`, \`cb_pin_update\`)|out_e = cb_windows_init(&w, (uint32_t)in[0], (uint32_t)in[1], CB_MODE_CONFIRM); out_e += cb_pin_init(&pin, in[2] > 0.0f); out_e += cb_pin_update(&pin, in[3] > 0.0f, &w);"
-  "the learner (\`cb_learner_prior_init\`, \`cb_learner_init\`, \`cb_learner_update\`, \`cb_learner_flags\`, \`cb_learner_save\`, \`cb_learner_restore\`)|out_e = cb_learner_prior_init(&lp, (uint16_t)in[0], (uint16_t)in[1], (uint16_t)in[2]); out_e += cb_learner_init(&key, in[3] > 0.0f); out_e += cb_learner_update(&key, in[4] > 0.0f, &lp); out_e += cb_learner_flags(&key, &lp); out_e += cb_learner_save(&key, &saved); out_e += cb_learner_restore(&key, in[5] > 0.0f, &saved);"
+  "the debouncer (\`cb_windows_init\`, \`cb_pin_init\`, \`cb_pin_update\`)|out_e = cb_windows_init(&w, n[0], n[1], CB_MODE_CONFIRM); out_e += cb_pin_init(&pin, n[2] != 0); out_e += cb_pin_update(&pin, n[3] != 0, &w);"
+  "the learner (\`cb_learner_prior_init\`, \`cb_learner_init\`, \`cb_learner_update\`, \`cb_learner_flags\`, \`cb_learner_save\`, \`cb_learner_restore\`)|out_e = cb_learner_prior_init(&lp, n[0], n[1], n[2]); out_e += cb_learner_init(&key, n[3] != 0); out_e += cb_learner_update(&key, n[4] != 0, &lp); out_e += cb_learner_flags(&key, &lp); out_e += cb_learner_save(&key, &saved); out_e += cb_learner_restore(&key, n[5] != 0, &saved);"
 )
 one() { # C statements -> text data bss of the minimal program around them
   cat > "$tmp/one.c" <<C_PROGRAM
 #include <stdint.h>
 #include "contact_bounce.h"
 volatile float in[7];
+volatile uint16_t n[6];
 volatile float out_f;
 volatile uint16_t out_e;
 int main(void) {

@@ -144,6 +144,7 @@ impl LearnerPrior {
 }
 
 /// What the learner has seen of one kind (press or release), in samples.
+#[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Tail {
@@ -241,6 +242,7 @@ impl Tail {
 
 /// What a learner has learned of a switch: press and release [`Tail`]s. Twelve bytes to save
 /// (for example in EEPROM) and restore, so a reboot does not start from the prior.
+#[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Learned {
@@ -368,6 +370,11 @@ const EVENT: u8 = 4;
 /// assert_eq!(key.learned().windows(&prior), (2, 1));
 /// # Ok::<(), contact_bounce::Error>(())
 /// ```
+///
+/// Its layout is fixed (`#[repr(C)]`: 24 bytes, aligned as a `u16`, integers only, no padding),
+/// so any 24 bytes so aligned are a valid state: a C wrapper can keep one in a `uint16_t[12]`
+/// and hand it to Rust as it is, with no copy per sample.
+#[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct LearningState {
@@ -385,7 +392,14 @@ pub struct LearningState {
     /// LEVEL (reported closed), ACTIVE (the event is still watched), EVENT (an edge has been
     /// reported since the key was settled: there is an event to learn from).
     flags: u8,
+    /// No meaning: 0 from a new state (it makes the layout free of padding).
+    reserved: u8,
 }
+
+const _: () = assert!(
+    core::mem::size_of::<LearningState>() == 24
+        && core::mem::align_of::<LearningState>() == core::mem::align_of::<u16>()
+);
 
 impl LearningState {
     /// A key settled at `closed` (its contact closed or not), with nothing learned.
@@ -422,6 +436,7 @@ impl LearningState {
             previous: u16::MAX,
             lead: u16::MAX,
             flags: if closed { LEVEL } else { 0 },
+            reserved: 0,
         }
     }
 
@@ -449,14 +464,15 @@ impl LearningState {
             self.bounce,
             self.previous,
             self.lead,
-            u16::from_le_bytes([self.flags, 0]),
+            u16::from_le_bytes([self.flags, self.reserved]),
         ]
     }
 
-    /// The state from [`LearningState::to_words`]. Any words are a valid state: every field is
-    /// a saturating counter or a flag, and every window is at most the fastest tap, so words not
-    /// made by `to_words` cannot make an update fail, panic or lose a change that lasts a tap;
-    /// at worst the key starts mid-event.
+    /// The state from [`LearningState::to_words`] (its inverse: every bit is kept). Any words
+    /// are a valid state: every field is a saturating counter or a flag (bits other than the
+    /// flags' are ignored), and every window is at most the fastest tap, so words not made by
+    /// `to_words` cannot make an update fail, panic or lose a change that lasts a tap; at worst
+    /// the key starts mid-event. On a little-endian target the words are the state's own memory.
     #[must_use]
     pub const fn from_words(w: [u16; 12]) -> Self {
         Self {
@@ -469,7 +485,8 @@ impl LearningState {
             bounce: w[8],
             previous: w[9],
             lead: w[10],
-            flags: w[11].to_le_bytes()[0] & (LEVEL | ACTIVE | EVENT),
+            flags: w[11].to_le_bytes()[0],
+            reserved: w[11].to_le_bytes()[1],
         }
     }
 
@@ -541,8 +558,14 @@ impl LearningState {
         self.run = self.run.saturating_add(1);
         // The event's window: what was learned of its kind changes only when an edge is
         // reported, so it is the window set at this event's edge.
-        let (press, release) = self.learned.windows(&prior);
-        let window = if level { press } else { release };
+        // (Only this kind's: the other's window is not needed.)
+        let window = if level {
+            self.learned.press.window(prior.press, prior.fastest_tap)
+        } else {
+            self.learned
+                .release
+                .window(prior.release, prior.fastest_tap)
+        };
         if active && self.since < window && self.run < prior.fastest_tap {
             return None;
         }
@@ -1019,6 +1042,7 @@ mod tests {
                 *word |= u16::from(x.to_le_bytes()[1]) << 8;
             }
             let mut key = LearningState::from_words(w);
+            assert_eq!(key.to_words(), w);
             let target = !key.is_closed();
             for _ in 0..p.fastest_tap() {
                 key.update(target, &p);

@@ -11,6 +11,14 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+// One key's learning debouncer: 24 bytes, aligned as a uint16_t. Set it with `cb_learner_init`
+// or `cb_learner_restore`.
+typedef struct cb_learner {
+  // The state; not to be read or written by the caller (any 24 bytes are a state, so a
+  // corrupted one cannot make an update fail, only start the key mid-event).
+  uint16_t state[12];
+} cb_learner;
+
 // `cb_prediction.flags`: the end time is finite.
 #define CB_HAS_END 1
 
@@ -307,13 +315,6 @@ typedef struct cb_learner_prior {
   uint16_t fastest_tap;
 } cb_learner_prior;
 
-// One key's learning debouncer: 24 bytes. Set it with `cb_learner_init` or
-// `cb_learner_restore`.
-typedef struct cb_learner {
-  // The state; not to be read or written by the caller.
-  uint16_t state[12];
-} cb_learner;
-
 // What a learner has learned, to save (for example in EEPROM) and restore: 12 bytes.
 typedef struct cb_learned {
   // The bytes, as `cb_learner_save` writes them.
@@ -471,38 +472,34 @@ cb_error cb_learner_prior_at_period(struct cb_learner_prior *out,
                                     uint32_t period_ns);
 
 // A key settled closed (`closed` true) or open, with nothing learned.
-cb_error cb_learner_init(struct cb_learner *learner, bool closed);
+cb_error cb_learner_init(cb_learner *learner, bool closed);
 
 // Feeds one sample (`closed`: the contact reads closed) and returns the edge it debounces;
 // `CB_EDGE_ERROR` (the learner unchanged) for a NULL argument or a prior not made by
 // `cb_learner_prior_init`.
-cb_edge cb_learner_update(struct cb_learner *learner,
-                          bool closed,
-                          const struct cb_learner_prior *prior);
+cb_edge cb_learner_update(cb_learner *learner, bool closed, const struct cb_learner_prior *prior);
 
 // Whether the key is debounced closed (false for NULL).
-bool cb_learner_is_closed(const struct cb_learner *learner);
+bool cb_learner_is_closed(const cb_learner *learner);
 
 // The press and release windows the learner uses now with `prior` (samples); `press` and
 // `release` are written only on success.
-cb_error cb_learner_windows(const struct cb_learner *learner,
+cb_error cb_learner_windows(const cb_learner *learner,
                             const struct cb_learner_prior *prior,
                             uint16_t *press,
                             uint16_t *release);
 
 // The learner's flags with `prior` (`CB_LEARNER_REVERTS_LIKE_A_TAP`); 0 for a NULL argument
 // or a bad prior.
-uint8_t cb_learner_flags(const struct cb_learner *learner, const struct cb_learner_prior *prior);
+uint8_t cb_learner_flags(const cb_learner *learner, const struct cb_learner_prior *prior);
 
 // What the learner has learned, as 12 bytes to save.
-cb_error cb_learner_save(const struct cb_learner *learner, struct cb_learned *out);
+cb_error cb_learner_save(const cb_learner *learner, struct cb_learned *out);
 
 // A key settled closed (`closed` true) or open that has learned what `cb_learner_save` saved.
 // `CB_ERR_OUT_OF_RANGE` (naming `CB_PARAM_TIME`) for bytes no learner saved (erased or
 // corrupted storage): the learner is then unchanged.
-cb_error cb_learner_restore(struct cb_learner *learner,
-                            bool closed,
-                            const struct cb_learned *saved);
+cb_error cb_learner_restore(cb_learner *learner, bool closed, const struct cb_learned *saved);
 
 #ifdef __cplusplus
 }  // extern "C"

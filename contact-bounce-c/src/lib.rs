@@ -1068,13 +1068,35 @@ pub extern "C" fn cb_learner_prior_at_period(
     }
 }
 
-/// One key's learning debouncer: 24 bytes. Set it with `cb_learner_init` or
-/// `cb_learner_restore`.
+/// One key's learning debouncer: 24 bytes, aligned as a `uint16_t`. Set it with
+/// `cb_learner_init` or `cb_learner_restore`.
+///
+/// The header declares it as `uint16_t state[12]` (written in cbindgen.toml: cbindgen cannot
+/// see into the core's type); it is the core's `LearningState` itself, whose layout is fixed
+/// (integers only, no padding), so any 24 bytes are a state and no sample pays for a copy.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct cb_learner {
-    /// The state; not to be read or written by the caller.
-    pub state: [u16; 12],
+    state: LearningState,
+}
+const _: () =
+    assert!(size_of::<cb_learner>() == 24 && align_of::<cb_learner>() == align_of::<u16>());
+
+impl cb_learner {
+    /// The learner whose `uint16_t state[12]` are `words` (on these little-endian targets, the
+    /// core's `LearningState::from_words`): for tests that write a state as C could.
+    #[must_use]
+    pub const fn from_words(words: [u16; 12]) -> Self {
+        Self {
+            state: LearningState::from_words(words),
+        }
+    }
+
+    /// The words C sees in `state`.
+    #[must_use]
+    pub const fn to_words(&self) -> [u16; 12] {
+        self.state.to_words()
+    }
 }
 
 /// What a learner has learned, to save (for example in EEPROM) and restore: 12 bytes.
@@ -1095,7 +1117,7 @@ pub const CB_LEARNER_REVERTS_LIKE_A_TAP: u8 = 1;
 pub extern "C" fn cb_learner_init(learner: Option<&mut cb_learner>, closed: bool) -> cb_error {
     match learner {
         Some(l) => {
-            l.state = LearningState::new(closed).to_words();
+            l.state = LearningState::new(closed);
             OK
         }
         None => NULL,
@@ -1115,13 +1137,11 @@ pub extern "C" fn cb_learner_update(
     let (Some(learner), Some(prior)) = (learner, prior) else {
         return cb_edge::CB_EDGE_ERROR;
     };
-    let Ok(prior) = learner_prior(*prior) else {
+    // (`ok()`: the error's code is not needed here, and its conversion costs flash.)
+    let Some(prior) = LearnerPrior::new(prior.press, prior.release, prior.fastest_tap).ok() else {
         return cb_edge::CB_EDGE_ERROR;
     };
-    let mut state = LearningState::from_words(learner.state);
-    let edge = state.update(closed, &prior);
-    learner.state = state.to_words();
-    match edge {
+    match learner.state.update(closed, &prior) {
         None => cb_edge::CB_EDGE_NONE,
         Some(Edge::Press) => cb_edge::CB_EDGE_PRESS,
         Some(Edge::Release) => cb_edge::CB_EDGE_RELEASE,
@@ -1132,7 +1152,7 @@ pub extern "C" fn cb_learner_update(
 #[allow(unsafe_code)]
 #[no_mangle]
 pub extern "C" fn cb_learner_is_closed(learner: Option<&cb_learner>) -> bool {
-    learner.is_some_and(|l| LearningState::from_words(l.state).is_closed())
+    learner.is_some_and(|l| l.state.is_closed())
 }
 
 /// The press and release windows the learner uses now with `prior` (samples); `press` and
@@ -1150,7 +1170,7 @@ pub extern "C" fn cb_learner_windows(
     };
     match learner_prior(*p) {
         Ok(p) => {
-            (*press, *release) = LearningState::from_words(l.state).learned().windows(&p);
+            (*press, *release) = l.state.learned().windows(&p);
             OK
         }
         Err(e) => e,
@@ -1165,12 +1185,11 @@ pub extern "C" fn cb_learner_flags(
     learner: Option<&cb_learner>,
     prior: Option<&cb_learner_prior>,
 ) -> u8 {
-    match (learner, prior.map(|p| learner_prior(*p))) {
-        (Some(l), Some(Ok(p)))
-            if LearningState::from_words(l.state)
-                .learned()
-                .reverts_like_a_tap(&p) =>
-        {
+    match (
+        learner,
+        prior.and_then(|p| LearnerPrior::new(p.press, p.release, p.fastest_tap).ok()),
+    ) {
+        (Some(l), Some(p)) if l.state.learned().reverts_like_a_tap(&p) => {
             CB_LEARNER_REVERTS_LIKE_A_TAP
         }
         _ => 0,
@@ -1186,7 +1205,7 @@ pub extern "C" fn cb_learner_save(
 ) -> cb_error {
     match (learner, out) {
         (Some(l), Some(out)) => {
-            out.bytes = LearningState::from_words(l.state).learned().to_bytes();
+            out.bytes = l.state.learned().to_bytes();
             OK
         }
         _ => NULL,
@@ -1208,7 +1227,7 @@ pub extern "C" fn cb_learner_restore(
     };
     match Learned::from_bytes(saved.bytes) {
         Ok(learned) => {
-            l.state = LearningState::restore(closed, learned).to_words();
+            l.state = LearningState::restore(closed, learned);
             OK
         }
         Err(e) => e.into(),

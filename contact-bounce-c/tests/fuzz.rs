@@ -409,10 +409,11 @@ fn the_learner_takes_any_state_prior_and_saved_bytes() {
             release: ((bits >> 16) & 0xFFFF) as u16,
             fastest_tap: ((bits >> 32) & 0xFFFF) as u16,
         };
-        let mut key = cb_learner { state: [0; 12] };
-        for (i, word) in key.state.iter_mut().enumerate() {
+        let mut words = [0_u16; 12];
+        for (i, word) in words.iter_mut().enumerate() {
             *word = (rng.next() >> (i % 4)) as u16;
         }
+        let mut key = cb_learner::from_words(words);
         let before = key;
         let edge = cb_learner_update(Some(&mut key), bits >> 63 == 1, Some(&prior)) as u8;
         assert!(edge <= 3, "{edge}");
