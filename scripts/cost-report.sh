@@ -351,6 +351,47 @@ else
   sed -i "s/EMPTYU/(no nightly here)/" "$out"
 fi
 
+# The learner from C on the Uno (contact-bounce-c): the flash of its entry points (a minimal C
+# program calling each, inputs read from volatiles, minus the same program without the calls,
+# linked as scripts/c-api.sh links C for the Uno) and its RAM per key (sizeof(cb_learner)).
+if [ "$uno" = 1 ]; then
+  cargo +nightly build --quiet --profile firmware -p contact-bounce-c --target avr-none -Zbuild-std=core
+  c_learner() { # 1 with the calls, 0 without -> the program's flash (text + data)
+    cat > "$tmp/learner.c" <<C_PROGRAM
+#include <stdint.h>
+#include "contact_bounce.h"
+volatile uint16_t n[6];
+volatile uint16_t out_e;
+int main(void) {
+    cb_learner_prior lp;
+    cb_learner key;
+    cb_learned saved;
+    (void)lp; (void)key; (void)saved;
+#if $1
+    out_e = cb_learner_prior_init(&lp, n[0], n[1], n[2]);
+    out_e += cb_learner_init(&key, n[3] != 0);
+    out_e += cb_learner_update(&key, n[4] != 0, &lp);
+    out_e += cb_learner_flags(&key, &lp);
+    out_e += cb_learner_save(&key, &saved);
+    out_e += cb_learner_restore(&key, n[5] != 0, &saved);
+#endif
+    for (;;) {
+    }
+}
+C_PROGRAM
+    avr-gcc -mmcu=atmega328p -Os -std=gnu99 -ffunction-sections -fdata-sections -Icontact-bounce-c/include \
+      "$tmp/learner.c" -Wl,--gc-sections \
+      -Wl,-u,__addsf3,-u,__subsf3,-u,__mulsf3,-u,__divsf3,-u,__eqsf2,-u,__nesf2,-u,__ltsf2,-u,__lesf2,-u,__gtsf2,-u,__gesf2,-u,__unordsf2,-u,__floatsisf,-u,__floatunsisf,-u,__fixsfsi,-u,__fixunssfsi,-u,sqrtf,-u,memcpy,-u,memmove,-u,memset \
+      -lm -lc target/avr-none/firmware/libcontact_bounce_c.a -lm -o "$tmp/learner.elf"
+    avr-size "$tmp/learner.elf" | tail -n 1 | awk '{ print $1 + $2 }'
+  }
+  c_learner_flash=$(( $(c_learner 1) - $(c_learner 0) ))
+  # sizeof(cb_learner) as avr-gcc lays it out: the size of an array of that many bytes.
+  printf '#include "contact_bounce.h"\nchar key_bytes[sizeof(cb_learner)];\n' > "$tmp/size.c"
+  avr-gcc -mmcu=atmega328p -c -Icontact-bounce-c/include "$tmp/size.c" -o "$tmp/size.o"
+  c_learner_ram=$(( 16#$(avr-nm -S "$tmp/size.o" | awk '$4 == "key_bytes" { print $2 }') ))
+fi
+
 # The goals of the crate's share (f32, libm; the Uno with avr-libc's float routines), each with
 # its gap and, on Cortex-M, the largest code the firmware holds beyond the empty one.
 {
@@ -391,6 +432,8 @@ fi
     goal avr-atmega328p tb1v-window cycles 10000 "${cycles[avr-atmega328p tb1v-window]:-}"
     goal avr-atmega328p restitution-averaged "cycles (N8; the goal is for N4)" 500000 "${cycles[avr-atmega328p restitution-averaged]:-}"
     goal avr-atmega328p map cycles 300000 "${cycles[avr-atmega328p map]:-}"
+    goal avr-atmega328p "learner from C (6 entry points)" "library bytes" 1536 "$c_learner_flash"
+    goal avr-atmega328p "learner from C" "RAM per key (bytes)" 24 "$c_learner_ram"
   fi
 } >> "$out"
 

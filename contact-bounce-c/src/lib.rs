@@ -660,6 +660,11 @@ pub extern "C" fn cb_preload_seconds_exact(
 }
 
 /// Writes `ceil((margin_factor * seconds + margin_extra) / sample_period)` to `ticks`.
+// Always inlined: called with its five arguments, the last goes on the stack on AVR, and
+// `cb_seconds_to_ticks` built by rustc for avr-none then read a wrong pointer or period and
+// reported an overflow for every input on the Uno (scripts/c-api.sh checks it there).
+#[allow(clippy::inline_always)]
+#[inline(always)]
 fn ticks_for(
     seconds: Option<f32>,
     margin_factor: f32,

@@ -53,19 +53,31 @@ static inline void prediction_line(put_line put, uint32_t index, const char *tie
     put(line);
 }
 
-/* The lean path on a switch, its preload force -offset * stiffness: "switch S tb1v end_ns N
- * ticks K" (or the error: a gap has no preload force). */
+/* The lean path on a switch, its preload force -offset * stiffness, and its window from
+ * cb_seconds_to_ticks: "switch S tb1v end_ns N ticks K" (or the error: a gap has no preload
+ * force). */
 static inline void tb1v_line(put_line put, uint32_t index) {
     const cb_switch *s = &SWITCHES[index];
     cb_estimate e;
     cb_error r = cb_preload_bounce_time(s->mass, s->stiffness, -s->offset * s->stiffness,
                                         s->restitution, s->damping_ratio, s->closing_speed, &e);
-    cb_prediction p = {0};
-    if (r == CB_OK) {
-        p.end_time = e.time;
-        p.flags = CB_HAS_END;
+    if (r != CB_OK) {
+        cb_prediction none = {0};
+        prediction_line(put, index, "tb1v", r, &none);
+        return;
     }
-    prediction_line(put, index, "tb1v", r, &p);
+    /* The window as a sketch takes it from the estimate: cb_seconds_to_ticks. */
+    uint32_t ticks = 0;
+    cb_error w = cb_seconds_to_ticks(e.time, 1.5f, 0.0f, 1e-5f, &ticks);
+    char line[96];
+    char *at = put_str(line, "switch ");
+    at = put_u32(at, index);
+    at = put_str(at, " tb1v end_ns ");
+    at = put_u32(at, (uint32_t)(e.time * 1e9f));
+    at = put_str(at, " ticks ");
+    at = put_u32(at, w == CB_OK ? ticks : 0u);
+    *at = '\0';
+    put(line);
 }
 
 /* The lean averaged path on a switch (restitution alone: its damping left out), its preload force

@@ -1,30 +1,48 @@
-// A debounce window from the switch's physics, and the debouncer, with nothing but this library
-// and <stdint.h> (so it compiles without any board's core headers). In a real sketch, read the
-// pin with digitalRead(PIN) == LOW (a button to ground with INPUT_PULLUP) instead of `level`.
-#include <stdint.h>
+// A debounce window computed from the switch's physics, and the 2-byte debouncer.
+//
+// Use this for a switch whose mechanics are known and repeatable: a relay, a reed switch, a
+// contactor (its moving mass, stiffness, preload, restitution, damping and closing speed). For
+// anything a hand presses, use LearnButton: a hand's switch bounces longer and less regularly
+// than its mechanics predict (a tactile dome's physics window, about 0.2 ms, lets a real push
+// button's bounces through as extra presses), and the learner finds the window from the switch
+// itself. Wire the contact from pin 2 to ground.
 #include <ContactBounce.h>
 
-static cb_windows windows;
-static cb_pin pin;
-volatile uint8_t level;   // the contact as sampled: 1 closed
-volatile uint16_t presses; // debounced presses
+const uint8_t CONTACT_PIN = 2;
+const unsigned long PERIOD_US = 100; // one sample each 0.1 ms
+
+cb_windows windows;
+cb_pin contact;
+unsigned long next_sample;
+unsigned long presses;
 
 void setup() {
+  pinMode(CONTACT_PIN, INPUT_PULLUP);
+  Serial.begin(115200);
   // A tactile dome: 50 mg moving mass on 5000 N/m, 1 N preload, R 0.7, zeta 0.03, 0.5 m/s.
   cb_estimate bounce;
   uint32_t ticks = 0;
   if (cb_preload_bounce_time(5e-5f, 5000.0f, 1.0f, 0.7f, 0.03f, 0.5f, &bounce) != CB_OK ||
-      cb_seconds_to_ticks(bounce.time, 1.5f, 0.0f, 1e-4f, &ticks) != CB_OK || // 0.1 ms samples
+      cb_seconds_to_ticks(bounce.time, 1.5f, 0.0f, PERIOD_US * 1e-6f, &ticks) != CB_OK ||
       cb_windows_init(&windows, ticks, ticks, CB_MODE_HOLD_OFF) != CB_OK ||
-      cb_pin_init(&pin, false) != CB_OK) {
+      cb_pin_init(&contact, digitalRead(CONTACT_PIN) == LOW) != CB_OK) {
+    Serial.println("bad switch");
     for (;;) {
     }
   }
+  Serial.print("window, samples: ");
+  Serial.println((unsigned long)ticks);
+  next_sample = micros();
 }
 
 void loop() {
-  // Call once per sample period (0.1 ms here, from a timer in a real sketch).
-  if (cb_pin_update(&pin, level != 0, &windows) == CB_EDGE_PRESS) {
-    presses = presses + 1;
+  if ((long)(micros() - next_sample) < 0) {
+    return;
+  }
+  next_sample += PERIOD_US;
+  if (cb_pin_update(&contact, digitalRead(CONTACT_PIN) == LOW, &windows) == CB_EDGE_PRESS) {
+    presses++;
+    Serial.print("press ");
+    Serial.println(presses);
   }
 }
