@@ -69,9 +69,20 @@ archive cortex-m4/fpv4-sp-d16-softfp thumbv7em-none-eabi "-C target-cpu=cortex-m
 mkdir -p "$out/src/cortex-m4/-mfpu=fpv4-sp-d16--mfloat-abi=softfp"
 cp "$out/src/cortex-m4/fpv4-sp-d16-softfp/lib$lib.a" "$out/src/cortex-m4/-mfpu=fpv4-sp-d16--mfloat-abi=softfp/"
 archive esp32c3 riscv32imc-unknown-none-elf ""
+# On AVR, avr-libc's hand-written float routines, square root and memory copies are smaller and
+# several times faster than the generic ones compiler-builtins puts in the archive (weak): made
+# local to their objects, the archive leaves them undefined for the platform's -lm and -lc,
+# which every AVR link recipe puts after the libraries. (The repository's own C builds mark
+# them undefined instead, with -Wl,-u; as the library's ldflags that would pull the C library's
+# float routines into every sketch on the other families.)
+avr_libc=(__addsf3 __subsf3 __mulsf3 __divsf3 __eqsf2 __nesf2 __ltsf2 __lesf2 __gtsf2 __gesf2
+  __unordsf2 __floatsisf __floatunsisf __fixsfsi __fixunssfsi sqrtf memcpy memmove memset)
 find "$out/src" -name "lib$lib.a" | while read -r a; do
   case $a in
-    */atmega*) avr-strip --strip-debug "$a" ;;
+    */atmega*)
+      avr-strip --strip-debug "$a"
+      avr-objcopy "${avr_libc[@]/#/--localize-symbol=}" "$a"
+      ;;
     */esp32c3/*) riscv64-unknown-elf-strip --strip-debug "$a" ;;
     *) arm-none-eabi-strip --strip-debug "$a" ;;
   esac
@@ -226,4 +237,59 @@ for board in "${boards[@]}"; do
   done
 done
 [ "$failed" = 0 ] || exit 1
+
+# The AVR boards with their real core: Debian's arduino-core-avr (the Arduino AVR core 1.8.x and
+# its EEPROM library), compiled and linked with its platform.txt's recipes, flags and link order
+# (the sketch with `#include <Arduino.h>` first, as the builder adds it). Not run: the core's
+# pins read real ports, which nothing drives in simavr. What each example takes of the board, and
+# how many learners fit beside LearnButton in the RAM the Arduino IDE leaves before it warns
+# (75 % of it for global variables).
+if [ ! -f /usr/share/arduino/hardware/arduino/avr/platform.txt ]; then
+  apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends arduino-core-avr >/dev/null
+fi
+avr_platform=/usr/share/arduino/hardware/arduino/avr
+version=$(sed -n 's/^version=//p' "$avr_platform/platform.txt")
+for board in "Uno|atmega328p|standard|AVR_UNO|32256|2048" "Mega 2560|atmega2560|mega|AVR_MEGA2560|253952|8192"; do
+  IFS='|' read -r name mcu variant id flash_max ram_max <<< "$board"
+  b="$tmp/core-$mcu"
+  mkdir -p "$b"
+  defs=(-mmcu="$mcu" -DF_CPU=16000000L -DARDUINO=10819 "-DARDUINO_$id" -DARDUINO_ARCH_AVR)
+  inc=(-I"$avr_platform/cores/arduino" -I"$avr_platform/variants/$variant")
+  cflags=(-c -g -Os -w -std=gnu11 -ffunction-sections -fdata-sections -flto -fno-fat-lto-objects)
+  cxxflags=(-c -g -Os -w -std=gnu++11 -fpermissive -fno-exceptions -ffunction-sections -fdata-sections
+    -fno-threadsafe-statics -Wno-error=narrowing -flto)
+  for f in "$avr_platform"/cores/arduino/*.{c,cpp,S}; do
+    case $f in
+      # (Debian's avr-gcc 5.4 does not compile WString.cpp, which asks <float.h> for DECIMAL_DIG;
+      # the official toolchain's 7.3 does. The examples use no String.)
+      */WString.cpp) continue ;;
+      *.c) avr-gcc "${cflags[@]}" "${defs[@]}" "${inc[@]}" "$f" -o "$b/$(basename "$f").o" ;;
+      *.cpp) avr-g++ "${cxxflags[@]}" "${defs[@]}" "${inc[@]}" "$f" -o "$b/$(basename "$f").o" ;;
+      *.S) avr-gcc -c -g -x assembler-with-cpp -flto "${defs[@]}" "${inc[@]}" "$f" -o "$b/$(basename "$f").o" ;;
+    esac
+  done
+  avr-gcc-ar rcs "$b/core.a" "$b"/*.o
+  d=$(folder recipe "$mcu" - - "-mmcu=$mcu")
+  for sketch in "$out"/examples/*/*.ino; do
+    example=$(basename "$sketch" .ino)
+    { echo '#include <Arduino.h>'; echo '#line 1'; cat "$sketch"; } > "$b/$example.cpp"
+    avr-g++ "${cxxflags[@]}" "${defs[@]}" "${inc[@]}" -I"$avr_platform/libraries/EEPROM/src" -I"$out/src" \
+      "$b/$example.cpp" -o "$b/$example.o"
+    # shellcheck disable=SC2086 # the library's ldflags are words
+    avr-gcc -w -Os -g -flto -fuse-linker-plugin -Wl,--gc-sections -mmcu="$mcu" -o "$b/$example.elf" \
+      "$b/$example.o" "-L$d" $ldflags "-l$lib" "$b/core.a" "-L$b" -lm
+    read -r text data bss _ < <(avr-size "$b/$example.elf" | tail -n 1)
+    flash=$((text + data)) ram=$((data + bss))
+    if [ "$flash" -gt "$flash_max" ] || [ "$ram" -gt $((ram_max * 3 / 4)) ]; then
+      echo "FAIL: $example with the Arduino AVR core $version for the $name does not fit: $flash bytes of flash, $ram of RAM" >&2
+      exit 1
+    fi
+    line="ok: $example with the Arduino AVR core $version for the $name (${d#"$out"/}): $flash of $flash_max bytes of flash, $ram of $ram_max of RAM"
+    if [ "$example" = LearnButton ]; then
+      line="$line; learners that fit beside it in 75 % of the RAM: $((1 + (ram_max * 3 / 4 - ram) / 24))"
+    fi
+    echo "$line"
+  done
+done
 echo "ok: the Arduino library in $out: every example for every board family, in simulation where one runs"
