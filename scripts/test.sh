@@ -36,8 +36,13 @@ cargo test --workspace 2>&1 | tee -a "$log"
 step "unit tests with the micromath backend (doctests assert libm figures)"
 cargo test -p contact-bounce --features micromath --lib 2>&1 | tee -a "$log"
 
-step "clippy -D warnings (host, all targets; thumbv7em, all features)"
+step "the debouncers that wait for their pin (feature async): unit tests and doctests"
+cargo test -p contact-bounce --features async --lib wait 2>&1 | tee -a "$log"
+cargo test -p contact-bounce --features async --doc wait 2>&1 | tee -a "$log"
+
+step "clippy -D warnings (host, all targets, and all features; thumbv7em, all features)"
 cargo clippy --workspace --all-targets -- -D warnings
+cargo clippy -p contact-bounce --all-features --all-targets -- -D warnings
 cargo clippy -p contact-bounce --all-features --target thumbv7em-none-eabihf -- -D warnings
 
 step "rustdoc -D warnings"
@@ -47,7 +52,7 @@ RUSTDOCFLAGS="-D warnings" cargo doc --quiet --no-deps -p bounce-table -p contac
 
 step "no_std builds for every target and feature set"
 for target in "${targets[@]}"; do
-  for features in "" "--no-default-features" "--features micromath" "--features defmt" "--all-features"; do
+  for features in "" "--no-default-features" "--features micromath" "--features defmt" "--features async" "--all-features"; do
     echo "  $target ${features:-(default)}"
     # shellcheck disable=SC2086
     cargo build --quiet -p contact-bounce --target "$target" $features

@@ -141,6 +141,14 @@ impl State {
         self.0 & CLOSED != 0
     }
 
+    /// No change is in progress: no window is counting (confirm: the contact last read the
+    /// debounced level; hold-off: the window after the last edge has run out), so a sample at
+    /// the debounced level changes nothing.
+    #[must_use]
+    pub const fn is_settled(&self) -> bool {
+        self.0 & COUNT == 0
+    }
+
     /// The state as 16 bits, to keep it where a Rust type cannot go (a C struct, backup RAM).
     #[must_use]
     pub const fn to_bits(self) -> u16 {

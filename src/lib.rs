@@ -107,6 +107,9 @@ pub mod scene;
 mod sign;
 pub mod tiers;
 mod tuning;
+#[cfg(feature = "async")]
+#[cfg_attr(docsrs, doc(cfg(feature = "async")))]
+pub mod wait;
 pub mod window;
 
 // The names most programs need, at the root; everything else in its module.
