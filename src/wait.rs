@@ -242,8 +242,8 @@ mod tests {
     use std::rc::Rc;
     use std::vec::Vec;
 
-    /// A push button tapped by a hand: `taps` taps, press to press 150-179 ms, held 35-94 ms,
-    /// each press bouncing for up to 4.5 ms and each release for up to 3 ms, the contact
+    /// A push button tapped by a hand: `taps` taps, press to press 149-179 ms, held 35-94 ms,
+    /// up at least 55 ms (so each tap and gap lasts more than the fastest tap, 31 ms), each press bouncing for up to 4.5 ms and each release for up to 3 ms, the contact
     /// changing every 100 to 340 us meanwhile; then, from the end of the run (`end`), pressed
     /// for good, so that a wait always returns. Closed at `t` nanoseconds?
     fn closed_at(t: u64, taps: u64) -> bool {

@@ -12,8 +12,9 @@ StandInEeprom EEPROM = {{
 }}; /* erased, as a new chip's */
 
 /* The script: TAPS taps, tap i pressed at start(i) and held hold(i) microseconds, on key
- * i % 16 of the matrix (or on the button). Press to press 150 to 179 ms, held 35 to 94 ms, so
- * every tap and every gap between taps lasts more than the fastest tap (31 ms); each press
+ * i % 16 of the matrix (or on the button). Press to press 149 to 179 ms, held 35 to 94 ms, up
+ * at least 56 ms, so every tap and every gap between taps lasts more than the fastest tap
+ * (31 ms); each press
  * bounces for up to 4.5 ms and each release for up to 3 ms, the contact changing every 100 to
  * 340 us meanwhile. The examples must report exactly TAPS presses (the physics window of a
  * tactile dome, shorter than these bounces, reports more: PhysicsWindow's note). */
