@@ -1,9 +1,11 @@
 //! Debouncers that wait for their pin (feature `async`): `next_edge().await` sleeps until the
 //! contact leaves its debounced level ([`Wait`], an interrupt in an async HAL), then samples it
 //! every period ([`DelayNs`]) until the change is debounced and its bounce has been watched,
-//! and returns the edge. Between events nothing runs; during one, the samples are those a polled
-//! debouncer would take at the same period, through the same state, so a window or a prior in
-//! samples means the same here.
+//! and returns the edge. Between events nothing runs; during one, it samples at the period a
+//! polled debouncer would use, through the same state, so a window or a prior in samples means
+//! the same here (its samples start when the pin wakes it, so their phase is not the polled
+//! ones': an edge may come up to a period apart, or, with a confirm window on a bouncing
+//! contact, up to the bounce apart; the tests measure both).
 //!
 //! Either kernel: [`Windowed`] (the 2-byte [`State`] with [`Windows`], from physics or a
 //! capture) or [`Learning`] (the [`LearningState`] with a [`LearnerPrior`]).
