@@ -702,7 +702,8 @@ impl<P: InputPin> LearningDebouncer<P> {
     }
 }
 
-fn read<P: InputPin>(pin: &mut P, polarity: Polarity) -> Result<bool, P::Error> {
+/// Whether the contact on `pin` reads closed (shared with [`crate::wait`]).
+pub(crate) fn read<P: InputPin>(pin: &mut P, polarity: Polarity) -> Result<bool, P::Error> {
     match polarity {
         Polarity::ActiveLow => pin.is_low(),
         Polarity::ActiveHigh => pin.is_high(),

@@ -40,6 +40,7 @@ use embedded_hal_async::delay::DelayNs;
 use embedded_hal_async::digital::Wait;
 
 use crate::debounce::Polarity;
+use crate::learn::read;
 use crate::{Edge, LearnerPrior, LearningState, State, Windows};
 
 /// What an [`AsyncDebouncer`] runs its samples through. Implemented by [`Windowed`] and
@@ -224,13 +225,6 @@ impl<P: InputPin + Wait, D: DelayNs, K: Kernel> AsyncDebouncer<P, D, K> {
     /// The pin, the delay and the kernel back.
     pub fn free(self) -> (P, D, K) {
         (self.pin, self.delay, self.kernel)
-    }
-}
-
-fn read<P: InputPin>(pin: &mut P, polarity: Polarity) -> Result<bool, P::Error> {
-    match polarity {
-        Polarity::ActiveLow => pin.is_low(),
-        Polarity::ActiveHigh => pin.is_high(),
     }
 }
 
