@@ -4,7 +4,7 @@
 # exit 0: `what` names what is skipped.
 avr_toolchain() {
   local what=$1
-  if ! rustup toolchain list | grep -q '^nightly'; then
+  if ! grep -q '^nightly' <<<"$(rustup toolchain list)"; then
     if ! rustup toolchain install nightly --profile minimal >/dev/null 2>&1; then
       echo "SKIPPED: $what needs a nightly toolchain, and none is installed or installable here" >&2
       exit 0

@@ -27,7 +27,9 @@ trap 'rm -rf "$tmp"' EXIT
 out="$tmp/report.md"
 failed=0
 no_panic() { # elf nm: fails the report if the firmware links any panic code (core::panicking)
-  if "$2" "$1" | grep -q 'core9panicking'; then
+  local symbols # read whole first: grep -q in a pipe under pipefail makes nm's SIGPIPE the status
+  symbols=$("$2" "$1")
+  if grep -q 'core9panicking' <<<"$symbols"; then
     echo "FAIL: $1 links a panic path (core::panicking): the crate must have none" >&2
     failed=1
   fi
@@ -65,7 +67,7 @@ done
 
 # The Uno (nightly, avr-none); the tier firmwares that do not fit say by how much.
 uno=0
-if rustup toolchain list | grep -q '^nightly'; then
+if grep -q '^nightly' <<<"$(rustup toolchain list)"; then
   rustup component add rust-src --toolchain nightly >/dev/null 2>&1 || true
   uno=1
   for example in uno uno_learn uno_auto uno_cost uno_cost_learner; do

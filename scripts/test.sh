@@ -62,8 +62,10 @@ done
 step "the embassy example (examples/embassy-button: the learner on an nRF52840 pin, feature async) builds and links"
 cargo build --quiet --release --target thumbv7em-none-eabihf --manifest-path examples/embassy-button/Cargo.toml \
   --target-dir target/embassy
-"$(rustc --print sysroot)/lib/rustlib/$(rustc -vV | sed -n 's/^host: //p')/bin/llvm-nm" \
-  target/embassy/thumbv7em-none-eabihf/release/embassy-button | grep -q ' T Reset$'
+# The symbols are read whole before grep: `nm | grep -q` under pipefail fails on nm's SIGPIPE.
+embassy_symbols=$("$(rustc --print sysroot)/lib/rustlib/$(rustc -vV | sed -n 's/^host: //p')/bin/llvm-nm" \
+  target/embassy/thumbv7em-none-eabihf/release/embassy-button)
+grep -q ' T Reset$' <<<"$embassy_symbols" || { echo "FAIL: the embassy example has no Reset" >&2; exit 1; }
 
 step "MSRV: the core builds for every Cortex-M target and passes its tests on Rust $(sed -n 's/^rust-version = "\(.*\)"/\1/p' Cargo.toml)"
 msrv=$(sed -n 's/^rust-version = "\(.*\)"/\1/p' Cargo.toml)
