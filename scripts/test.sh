@@ -177,7 +177,7 @@ for path in ("README.md", "docs/eval-catalogue.md"):
         sys.exit(f"{path}: the eval table differs from scripts/eval-catalogue.sh's output")
 PY
 
-step "docs/calibration.md, docs/replay.md, their plots and the README's replay table are current (need the shared capture, ../shared/data)"
+step "docs/calibration.md, docs/replay.md, their plots and the README's replay table are current, and the keyboard matrix typed on the real switches (need the shared capture, ../shared/data)"
 if [ -f ../shared/data/bouncy-button-uno.jsonl ]; then
   scripts/calibration-report.sh | diff - docs/calibration.md
   replay=$(scripts/replay-report.sh)
@@ -189,6 +189,8 @@ if [ -f ../shared/data/bouncy-button-uno.jsonl ]; then
   diff -r "$plots/calibration" docs/calibration
   diff -r "$plots/replay" docs/replay
   rm -rf "$plots"
+  # The keyboard matrix: 100 keys of each real switch typed on (bounce-table/tests/matrix.rs).
+  CAPTURE=../shared/data/bouncy-button-uno.jsonl cargo test --quiet -p bounce-table --test matrix -- --ignored --nocapture
   python3 - "$replay" <<'PY'
 import sys
 doc = sys.argv[1]

@@ -163,7 +163,7 @@ pub struct Tail {
 /// [`Windows::MAX_TICKS`]. A bounce seen over `m` samples lasted more than `m - 1` sampling
 /// periods (its first and last change each fall anywhere in a sample), so this is at most 3/2
 /// of the bounce plus one sample, and never less than what was seen.
-const fn grow(m: u16) -> u16 {
+pub(crate) const fn grow(m: u16) -> u16 {
     if m == 0 {
         return 1;
     }
@@ -232,7 +232,7 @@ impl Tail {
     }
 
     /// A reversion of the switch's own, `lasted` samples, with `tap` the fastest tap.
-    fn reverted(&mut self, lasted: u16, tap: u16) {
+    pub(crate) fn reverted(&mut self, lasted: u16, tap: u16) {
         self.reversion = max(self.reversion, min(lasted, Windows::MAX_TICKS));
         if lasted.saturating_mul(2) >= tap {
             self.long_reversions = self.long_reversions.saturating_add(1);
@@ -335,7 +335,7 @@ impl Learned {
         self.press.reverts_like_a_tap(prior) || self.release.reverts_like_a_tap(prior)
     }
 
-    const fn tail(&mut self, press: bool) -> &mut Tail {
+    pub(crate) const fn tail(&mut self, press: bool) -> &mut Tail {
         if press {
             &mut self.press
         } else {

@@ -95,6 +95,7 @@ mod exact;
 mod float;
 pub mod learn;
 mod map;
+pub mod matrix;
 mod mechanisms;
 mod method;
 pub mod model;
