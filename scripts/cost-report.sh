@@ -53,7 +53,7 @@ declare -A qemu=(
   [thumbv7m-none-eabi]="-cpu cortex-m3 -machine lm3s6965evb"
   [thumbv7em-none-eabihf]="-cpu cortex-m4 -machine mps2-an386"
 )
-examples=(predict debounce_trace cost cost_learner size_restitution size_viscous size_hereditary size_tier_closed size_tier_averaged size_tier_map size_tier_exact size_tier_auto)
+examples=(predict debounce_trace cost cost_learner cost_matrix size_restitution size_viscous size_hereditary size_tier_closed size_tier_averaged size_tier_map size_tier_exact size_tier_auto)
 for target in thumbv6m-none-eabi thumbv7m-none-eabi thumbv7em-none-eabihf; do
   cargo build --quiet --profile firmware --target "$target" $(printf -- '--example %s ' "${examples[@]}")
   for example in "${examples[@]}"; do
@@ -138,6 +138,56 @@ done
   echo "that uses it alone would inline it. Idle: a settled contact, the path of nearly every sample; the"
   echo "learner's must cost at most twice ours. RAM per key: \`State\` 2 bytes, \`LearningState\` 24 bytes"
   echo "(\`size_of\`, tested)."
+} >> "$out"
+
+marks_qemu() { # elf target -> one count per interval between marks
+  local mark
+  mark=$("$llvm_bin/llvm-nm" "$1" | awk '$3 == "cost_mark" { print $1 }')
+  # shellcheck disable=SC2086
+  timeout 600 qemu-system-arm ${qemu[$2]} -nographic -semihosting-config enable=on,target=native \
+    -d exec,nochain -singlestep -D "$tmp/trace" -kernel "$1"
+  awk -v mark="$mark" '{ if (match($0, /\[[0-9a-f]+\/([0-9a-f]+)\//)) { n++; if (substr($0, RSTART+10, 8) == mark) { if (last) print n - last; last = n } } }' "$tmp/trace"
+}
+# The keyboard matrix (examples/cost_matrix.rs): 100 keys typed on and idle, ours against
+# debouncr and a QMK-like sym_eager_pk; RAM from the sizes of the RAM_* symbols.
+{
+  echo
+  echo "## Keyboard matrix, 100 keys (QEMU)"
+  echo
+  echo "Instructions per key per scan, net of the scan loop, in \`examples/cost_matrix.rs\`: a 10 x 10"
+  echo "matrix (\`u16\` rows) scanned 500 times while typed on (a tap every 50 scans on another key, its"
+  echo "press and release bouncing), then 500 times idle. Ours: \`LearningMatrix\`; debouncr: one"
+  echo "5-sample \`Debouncer\` a key; QMK-like: \`sym_eager_pk\` as QMK's source describes it (a countdown"
+  echo "byte a key, every key counted down while any runs). All three offer their events to a"
+  echo "\`heapless::Vec\`. RAM: \`size_of\` in the firmware; the model is a matrix with no keys."
+  echo
+  echo "| target | typing: ours | debouncr | QMK-like | idle: ours | debouncr | QMK-like | RAM: ours (model) | debouncr | QMK-like |"
+  echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+} >> "$out"
+declare -A matrix_scan matrix_ram
+for target in thumbv6m-none-eabi thumbv7m-none-eabi thumbv7em-none-eabihf; do
+  elf="target/$target/firmware/examples/cost_matrix"
+  mapfile -t x < <(marks_qemu "$elf" "$target")
+  # x: ours, debouncr, QMK-like, loop typing; setup; ours, debouncr, QMK-like, loop idle.
+  if [ "${#x[@]}" -ne 9 ]; then
+    echo "FAIL: cost_matrix on $target: ${#x[@]} counts, expected 9" >&2
+    failed=1
+    continue
+  fi
+  ram() { local hex; hex=$("$llvm_bin/llvm-nm" -S "$elf" | awk -v s="$1" '$4 == s { print $2 }'); echo $(( 16#${hex:-0} )); }
+  pk() { awk "BEGIN { printf \"%.2f\", ($1 - $2) / 50000 }"; }
+  ours=$(ram RAM_MATRIX); model=$(ram RAM_MODEL)
+  echo "| $target | $(pk "${x[0]}" "${x[3]}") | $(pk "${x[1]}" "${x[3]}") | $(pk "${x[2]}" "${x[3]}") | $(pk "${x[5]}" "${x[8]}") | $(pk "${x[6]}" "${x[8]}") | $(pk "${x[7]}" "${x[8]}") | $ours ($model) | $(ram RAM_DEBOUNCR) | $(ram RAM_QMK) |" >> "$out"
+  # Per scan of the 100 keys, for the goals: ours and debouncr's, typing and idle.
+  matrix_scan["$target typing"]="$(( (x[0] - x[3]) / 500 )) $(( (x[1] - x[3]) / 500 ))"
+  matrix_scan["$target idle"]="$(( (x[5] - x[8]) / 500 )) $(( (x[6] - x[8]) / 500 ))"
+  matrix_ram[$target]="$(( ours - model )) $model"
+done
+{
+  echo
+  echo "Ours scans a row in a few instructions when none of its keys changed or is in an event, and"
+  echo "looks at the keys that did alone; debouncr updates every key every scan. The QMK-like"
+  echo "debouncer learns nothing (a fixed 5-scan lock-out): the price of learning is the difference."
 } >> "$out"
 
 # Every tier on every catalogue switch (and a few more scenes), Cortex-M4F: what Auto's cost
@@ -262,14 +312,6 @@ empty = code(sys.argv[2])
 extra = sorted(((s, n) for n, s in code(sys.argv[1]).items() if n not in empty), reverse=True)
 print(", ".join(f"`{n}` {s}" for s, n in extra[:4]).replace("|", "\\|"))
 PY
-}
-marks_qemu() { # elf target -> one count per interval between marks
-  local mark
-  mark=$("$llvm_bin/llvm-nm" "$1" | awk '$3 == "cost_mark" { print $1 }')
-  # shellcheck disable=SC2086
-  timeout 600 qemu-system-arm ${qemu[$2]} -nographic -semihosting-config enable=on,target=native \
-    -d exec,nochain -singlestep -D "$tmp/trace" -kernel "$1"
-  awk -v mark="$mark" '{ if (match($0, /\[[0-9a-f]+\/([0-9a-f]+)\//)) { n++; if (substr($0, RSTART+10, 8) == mark) { if (last) print n - last; last = n } } }' "$tmp/trace"
 }
 {
   echo
@@ -424,6 +466,15 @@ fi
   goal thumbv6m-none-eabi auto "crate bytes" 12288 "${crate[thumbv6m-none-eabi auto]:-}"
   goal thumbv7em-none-eabihf auto-exact "crate bytes" 8192 "${crate[thumbv7em-none-eabihf auto-exact]:-}"
   goal thumbv6m-none-eabi auto-exact "crate bytes" 12288 "${crate[thumbv6m-none-eabi auto-exact]:-}"
+  for target in thumbv6m-none-eabi thumbv7em-none-eabihf; do
+    read -r keys model <<<"${matrix_ram[$target]:-}"
+    goal "$target" "keyboard matrix (100 keys)" "RAM of the keys (bytes; goal 2 a key)" 200 "${keys:-}"
+    goal "$target" "keyboard matrix (100 keys)" "RAM of the shared model (bytes)" 32 "${model:-}"
+    for load in typing idle; do
+      read -r ours theirs <<<"${matrix_scan[$target $load]:-}"
+      goal "$target" "keyboard matrix (100 keys)" "instructions a scan, $load (goal: debouncr's)" "${theirs:-0}" "${ours:-}"
+    done
+  done
   if [ "$uno" = 1 ]; then
     for tier in "${tiers[@]}"; do
       case $tier in auto | auto_restitution | auto_exact) continue ;; esac

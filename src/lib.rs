@@ -44,6 +44,8 @@
 //!   without the counts and expected error a prediction carries, whose code is then not linked.
 //! - [`debounce`]: a [`Debouncer`] on such windows (2 bytes of [`State`] per pin, integer-only),
 //!   and [`learn`]: a [`LearningDebouncer`] that learns its own switch from a prior window.
+//! - [`matrix`]: a keyboard matrix ([`matrix::LearningMatrix`]) whose keys learn their switch
+//!   once for all of them, in a byte and three bits a key.
 //! - [`model`]: the parts of the averaged model (the generating orbit, the averaged equation's
 //!   terms) for those who build on them.
 //!

@@ -384,17 +384,21 @@ fn scan_row<B: Row>(
     let (mut level, mut active, mut widened) =
         (bits.level.into(), bits.active.into(), bits.widened.into());
     let tap = model.prior.fastest_tap();
-    for (c, key) in keys.iter_mut().enumerate() {
+    // Only the keys that changed or are in an event (`raw` has no bits beyond the columns).
+    let mut work = (raw ^ level) | active;
+    while work != 0 {
+        let c = work.trailing_zeros();
         let bit = 1u32 << c;
+        work &= !bit;
+        // `c` < `COLS` (no bits beyond the columns), so `key` is always there.
+        let Some(key) = keys.get_mut(usize::from(c.to_le_bytes()[0])) else {
+            break;
+        };
         let other = (raw ^ level) & bit != 0;
         let is_active = active & bit != 0;
-        if !is_active && !other {
-            continue;
-        }
         // The key's level: closed, its event (if any) is a press.
         let press = level & bit != 0;
         let edge = KeyEvent {
-            // `c` < 32 (checked when built).
             row,
             col: c.to_le_bytes()[0],
             edge: if press { Edge::Release } else { Edge::Press },
