@@ -686,6 +686,39 @@ mod tests {
     }
 
     #[test]
+    fn events_pass_through_an_spsc_queue_from_the_scan_to_the_main_loop() {
+        // Room for 3 events (heapless's queue of 4 keeps one slot free).
+        let mut queue = heapless::spsc::Queue::<KeyEvent, 4>::new();
+        let (mut producer, mut consumer) = queue.split();
+        let mut m =
+            LearningMatrix::<u32, 2, 20>::new(prior(5, 31)).unwrap_or_else(|_| unreachable!());
+        let mut got = StdVec::new();
+        // Four keys close in one scan: the fourth waits for room, and the main loop (which
+        // empties the queue between scans) gets it from the next scan.
+        let mut deferred = StdVec::new();
+        for n in 0..40 {
+            let rows = if n < 20 {
+                [1 << 19 | 1, 1 << 3 | 1 << 4]
+            } else {
+                [1 << 19, 1 << 3 | 1 << 4]
+            };
+            deferred.push(m.scan(&rows, &mut |e| producer.enqueue(e)).deferred);
+            got.extend(core::iter::from_fn(|| consumer.dequeue()).map(|e| (n, e)));
+        }
+        assert_eq!(deferred.get(..2), Some(&[1, 0][..]));
+        assert_eq!(
+            got,
+            [
+                (0, ev(0, 0, Edge::Press)),
+                (0, ev(0, 19, Edge::Press)),
+                (0, ev(1, 3, Edge::Press)),
+                (1, ev(1, 4, Edge::Press)),
+                (20, ev(0, 0, Edge::Release)),
+            ]
+        );
+    }
+
+    #[test]
     fn bits_beyond_the_columns_are_not_keys() {
         let mut m =
             LearningMatrix::<u8, 1, 3>::new(prior(5, 31)).unwrap_or_else(|_| unreachable!());
