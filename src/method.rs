@@ -60,8 +60,10 @@ pub enum Method<F> {
     /// their estimated cost (known before any of them runs: impacts to walk, panels, flights;
     /// weighed as on a Cortex-M4F, `docs/cost-report.md`), the exact tier always among them, as
     /// it promises the float's rounding on every one-body scene with at most one kernel. Where
-    /// nothing does (two kernels; f32 over very many impacts; a return decided by rounding) the
-    /// smallest expected error wins: check [`Prediction::promises`]. Its worst-case work is the
+    /// nothing does (two kernels; f32 over very many impacts; a return decided by rounding;
+    /// more flights than the exact tier's cap) the smallest expected error wins, and between
+    /// equal ones an answer with a bounce time: check [`Prediction::promises`]. Its worst-case
+    /// work is the
     /// exact
     /// tier's at [`EXACT_MAX_IMPACTS`](crate::tiers::EXACT_MAX_IMPACTS)
     /// ([`Scene::exact_work`]); firmware that cannot afford that names a tier, or
@@ -314,7 +316,17 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
                 }
             }
         }
+        // The smaller expected error; between equal ones (none stated, say), an answer with a
+        // bounce time over one without: a tier that finds the time where another cannot (the
+        // closed tier's asymptote outside its validity on an endless scene with a threshold)
+        // is never passed over for the one that does not.
         let rank = |p: &Prediction<F>| p.expected_error.unwrap_or(F::MAX);
+        let better = |p: &Prediction<F>, than: &Prediction<F>| {
+            rank(p) < rank(than)
+                || (rank(p) == rank(than)
+                    && than.bounce_time().is_none()
+                    && p.bounce_time().is_some())
+        };
         let mut best = closed;
         let mut ran = [false; 3];
         for (_, candidate, expected) in order {
@@ -326,7 +338,7 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
                 if let Some(done) = ran.get_mut(candidate.index()) {
                     *done = true;
                 }
-                if rank(&p) < rank(&best) {
+                if better(&p, &best) {
                     best = p;
                 }
             }
@@ -334,7 +346,7 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
         for (done, candidate) in ran.into_iter().zip(Candidate::ALL) {
             if !done {
                 let p = self.run::<TIERS>(candidate, &closed);
-                if rank(&p) < rank(&best) {
+                if better(&p, &best) {
                     best = p;
                 }
             }

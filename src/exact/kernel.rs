@@ -67,10 +67,6 @@ pub(crate) struct Kernel<F> {
     delta: F,
     /// 1 - R.
     loss: F,
-    /// The characteristic polynomial's coefficients.
-    a2: F,
-    a1: F,
-    a0: F,
     /// The real root r1 and its distance r1 + beta from -beta.
     real: F,
     shifted: F,
@@ -79,10 +75,17 @@ pub(crate) struct Kernel<F> {
     w: F,
     /// The fastest rate of the free motion (1/s): the series serves below SERIES_LIMIT / lambda.
     lambda: F,
+    /// The characteristic polynomial's coefficients (a2 = 2 zeta Omega + beta, a1 = Omega^2 +
+    /// 2 zeta Omega beta, a0) in the series' scaled time lambda t: a2 / lambda, a1 / lambda^2,
+    /// a0 / lambda^3.
+    scaled: [F; 3],
     /// The scan's step (s).
     step: F,
     /// u at the next departure (m/s^2).
     force: F,
+    /// The last return's rounding beyond a well-conditioned flight's (see
+    /// [`Flights::rounding`]).
+    rounding: (F, F),
 }
 
 /// One flight's modal coefficients: x = c1 e^(r1 t) + e^(alpha t) (p cos + q sin), and u's.
@@ -157,26 +160,31 @@ impl<F: Float> Kernel<F> {
             beta,
             delta,
             loss: scene.loss(),
-            a2: damping + beta,
-            a1: omega2 + damping * beta,
-            a0,
             real: shifted - beta,
             shifted,
             alpha: -e1 * F::HALF,
             w,
             lambda,
+            scaled: [
+                (damping + beta) / lambda,
+                (omega2 + damping * beta) / lambda / lambda,
+                a0 / lambda / lambda / lambda,
+            ],
             step: F::PI / (c::<F>(STEPS_PER_PERIOD / 2.0) * w),
             force,
+            rounding: (F::ZERO, F::ZERO),
         };
         let finite = [
-            kernel.a1,
-            kernel.a0,
+            a0,
             e0,
             w,
             lambda,
             kernel.step,
             force,
             kernel.real,
+            kernel.scaled[0],
+            kernel.scaled[1],
+            kernel.scaled[2],
         ]
         .iter()
         .all(|x| x.is_finite());
@@ -188,9 +196,14 @@ impl<F: Float> Kernel<F> {
         let (x0, x1) = (self.delta, -a);
         let x2 = -self.omega2 * self.delta + self.damping * a + self.force;
         let (alpha, w, r1) = (self.alpha, self.w, self.real);
-        let e0 = alpha * alpha + w * w;
         let denominator = (r1 - alpha) * (r1 - alpha) + w * w;
-        let c1 = (x2 - F::TWO * alpha * x1 + e0 * x0) / denominator;
+        // c1's numerator x''(0) - 2 alpha x'(0) + e0 x(0), with -2 alpha = 2 zeta Omega + d
+        // and e0 - Omega^2 = d (2 zeta Omega + d - beta) (the characteristic polynomial's
+        // a1 = e0 + 2 alpha r1), is u(0) + d ((2 zeta Omega + d - beta) Delta - a): summed as
+        // written it cancelled 2 zeta Omega a against itself (f32, zeta 0.35 on a kernel of
+        // static share 0.7: c1 and so the kernel's force 2.6e-5 off after one flight).
+        let d = self.shifted;
+        let c1 = (self.force + d * ((self.damping + d - self.beta) * x0 - a)) / denominator;
         let p = x0 - c1;
         let q = (x1 - r1 * c1 - alpha * p) / w;
         // u's part of a mode e^(s t) is kappa / (s + beta) times x's.
@@ -225,36 +238,47 @@ impl<F: Float> Kernel<F> {
             co - F::ONE
         };
         let y = m.c1 * e + m.p * (decay * co + versine) + m.q * (decay + F::ONE) * s;
+        // u the same way, from the force at the departure (u1 + uc): summed from the modes it
+        // rounded to an epsilon of their size every flight, and where the kernel nearly
+        // cancels the spring's pull at the stop (a static share of 0.87), the later flights'
+        // pull -Omega^2 Delta + u lost 20 times that (f32, 2.9e-4 by the twelfth flight).
+        let u = self.force + m.u1 * e + m.uc * (decay * co + versine) + m.us * (decay + F::ONE) * s;
         let (e, decay) = (e + F::ONE, decay + F::ONE);
         let v = m.c1 * self.real * e
             + decay * ((alpha * m.p + w * m.q) * co + (alpha * m.q - w * m.p) * s);
-        let u = m.u1 * e + decay * (m.uc * co + m.us * s);
         (y, v, u)
     }
 
-    /// ((x - Delta) / t, x') from the Taylor series about the departure: D0 = Delta, D1 = -a,
-    /// D2 = x''(0) / 2, D(n+3) = -(a2 D(n+2) / (n+3) + a1 D(n+1) / ((n+3)(n+2))
-    /// + a0 D(n) / ((n+3)(n+2)(n+1))).
+    /// ((x - Delta) / t, x') from the Taylor series about the departure, in the scaled time
+    /// s = lambda t (so that no coefficient overflows: unscaled, the n-th grows as lambda^n /
+    /// n!, past f32's range by the twentieth on a kernel of lambda 6e4 1/s, where the series
+    /// gave NaN and the flight was lost): x = sum E(n) s^n, E0 = Delta, E1 = -a / lambda,
+    /// E2 = x''(0) / (2 lambda^2), E(n+3) = -(b2 E(n+2) / (n+3) + b1 E(n+1) / ((n+3)(n+2)) +
+    /// b0 E(n) / ((n+3)(n+2)(n+1))), with b2 = a2 / lambda, b1 = a1 / lambda^2 and b0 = a0 /
+    /// lambda^3 (each at most a few: lambda is the fastest rate).
     fn series(&self, m: &Modes<F>, a: F, t: F) -> (F, F) {
-        let (mut d0, mut d1, mut d2) = (self.delta, -a, m.x2 * F::HALF);
+        let l = self.lambda;
+        let [b2, b1, b0] = self.scaled;
+        let (mut d0, mut d1, mut d2) = (self.delta, -a / l, m.x2 / l / l * F::HALF);
         let mut sum = TaylorSum::new(d1);
-        // d2 is the coefficient of t^2 in x: of t in (x - Delta) / t. (Three quiet terms to
+        // d2 is the coefficient of s^2 in x: of s in (x - Delta) / s. (Three quiet terms to
         // stop, not two: with three terms in the recurrence one coefficient can nearly vanish
         // between larger ones.)
+        let s = l * t;
         for n in 2..SERIES_TERMS {
             let nf = F::from_u32(n);
-            if sum.add(nf, d2, t, 3) {
+            if sum.add(nf, d2, s, 3) {
                 break;
             }
             // d(n+1) from d(n), d(n-1), d(n-2): k = n - 2 in the recurrence.
             let (n1, n0, nm) = (nf + F::ONE, nf, nf - F::ONE);
-            let next =
-                -(self.a2 * d2 / n1 + self.a1 * d1 / (n1 * n0) + self.a0 * d0 / (n1 * n0 * nm));
+            let next = -(b2 * d2 / n1 + b1 * d1 / (n1 * n0) + b0 * d0 / (n1 * n0 * nm));
             d0 = d1;
             d1 = d2;
             d2 = next;
         }
-        (sum.over_t, sum.slope)
+        // (x - Delta) / t = lambda (x - Delta) / s, and dx/dt = lambda dx/ds.
+        (sum.over_t * l, sum.slope * l)
     }
 
     /// (x - Delta, x'): the series for short times, the closed form beyond.
@@ -332,6 +356,25 @@ impl<F: Float> Flights<F> for Kernel<F> {
         );
         if speed > F::ZERO {
             self.force = self.closed(&m, t).2;
+            // The return's conditioning: the modes' sizes in x and x' at the return over its
+            // speed. (The series, for short flights, is summed relative to the flight itself.)
+            // The kernel's force carried to the next flight (always from the closed form) is
+            // a difference of its modes too: its error moves the pull g = -Omega^2 Delta + u
+            // the later flights fall back at, and their times with it.
+            let (e, decay) = ((self.real * t).exp(), (self.alpha * t).exp());
+            let pull = (self.force - self.omega2 * self.delta).abs();
+            let moved = m.u1.abs() * (e - F::ONE).abs() + (F::ONE + decay) * m.uc.hypot(m.us);
+            let force = F::EPSILON * (self.force.abs() + moved) / pull;
+            self.rounding = if self.lambda * t > c(SERIES_LIMIT) {
+                let (slow, pair) = (m.c1.abs() * e, decay * m.p.hypot(m.q));
+                let rates = (self.alpha * self.alpha + self.w * self.w).sqrt();
+                (
+                    F::EPSILON * (m.c1.abs() + m.p.hypot(m.q) + pair) / speed,
+                    F::EPSILON * (slow * self.real.abs() + pair * rates) / speed + force,
+                )
+            } else {
+                (F::ZERO, force)
+            };
             Landing::Returns {
                 time: t,
                 speed,
@@ -340,6 +383,10 @@ impl<F: Float> Flights<F> for Kernel<F> {
         } else {
             Landing::Stays { grazing: true }
         }
+    }
+
+    fn rounding(&self) -> (F, F) {
+        self.rounding
     }
 
     fn tail(&mut self, a: F, _elapsed: F) -> Option<(F, F)> {
