@@ -3,7 +3,7 @@
 use crate::averaged::Averaged;
 use crate::error::{positive, Error, Parameter};
 use crate::mechanisms::Dissipation;
-use crate::prediction::Prediction;
+use crate::prediction::{Prediction, Time};
 use crate::quadrature::{panel_count, Nodes};
 use crate::regime::Regime;
 use crate::scene::OffsetSign;
@@ -321,11 +321,11 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
         // closed tier's asymptote outside its validity on an endless scene with a threshold)
         // is never passed over for the one that does not.
         let rank = |p: &Prediction<F>| p.expected_error.unwrap_or(F::MAX);
+        let timed = |p: &Prediction<F>| {
+            matches!(p.end_time, Time::At(_)) || matches!(p.last_above_time, Time::At(_))
+        };
         let better = |p: &Prediction<F>, than: &Prediction<F>| {
-            rank(p) < rank(than)
-                || (rank(p) == rank(than)
-                    && than.bounce_time().is_none()
-                    && p.bounce_time().is_some())
+            rank(p) < rank(than) || (rank(p) == rank(than) && !timed(than) && timed(p))
         };
         let mut best = closed;
         let mut ran = [false; 3];

@@ -99,6 +99,14 @@ impl Rng {
     }
 }
 
+/// Scenes per family: `n`, or `OUTSIDE_SCENES` when set (`scripts/fuzz.sh` runs more).
+fn scenes(n: usize) -> usize {
+    std::env::var("OUTSIDE_SCENES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(n)
+}
+
 /// `n` preloads of the family `draw` gives (zeta and the kernel) through [`f32_holds`]: the
 /// scenes whose promise broke, and how many were judged.
 fn family(
@@ -108,7 +116,7 @@ fn family(
 ) -> (Vec<String>, usize) {
     let mut rng = Rng(seed);
     let (mut broken, mut judged) = (Vec::new(), 0);
-    for _ in 0..n {
+    for _ in 0..scenes(n) {
         let omega = rng.log_uniform(1.0, 1e7);
         let delta = -rng.log_uniform(1e-15, 1e-2);
         let r = rng.log_uniform(0.01, 0.99);

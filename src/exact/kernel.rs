@@ -388,6 +388,7 @@ impl<F: Float> Flights<F> for Kernel<F> {
     fn rounding(&self) -> (F, F) {
         self.rounding
     }
+    const ROUNDED: bool = true;
 
     fn tail(&mut self, a: F, _elapsed: F) -> Option<(F, F)> {
         let g = -self.omega2 * self.delta + self.force;

@@ -281,24 +281,49 @@ impl<F: Float, S: OffsetSign> Oscillator<F, S> {
                     e * (v0 * cosine - (alpha * v0 + omega * omega * delta) / w * sine),
                 );
             }
-            // Summed from the modes' departures, x - Delta = sum A expm1(s t), where that has
-            // the smaller rounding, else from the modes themselves, sum A e^(s t) - Delta: the
-            // first keeps a short flight's digits (from x near Delta it lost log10(|Delta| /
-            // |y|) of them: an overdamped return in f32 off by up to 12 times its figure), the
-            // second a long one's (a mode decayed to near Delta: A (e^(s t) - 1) + A keeps
-            // nothing of A e^(s t); f32, a preload of 7e-15 m, 1.3 % off). Each one's bound is
-            // an epsilon of the sum of its terms' sizes.
+            // Summed from the modes' departures, x - Delta = sum A expm1(s t), where that
+            // rounds less (its terms are smaller), else from the modes themselves, sum A e^(s t)
+            // - Delta: the first keeps a short flight's digits (from x near Delta it lost
+            // log10(|Delta| / |y|) of them: an overdamped return in f32 off by up to 12 times
+            // its figure), the second a long one's (a mode decayed to near Delta: A (e^(s t) -
+            // 1) + A keeps nothing of A e^(s t); f32, a preload of 7e-15 m, 1.3 % off). The
+            // critically damped flight by the time its mode has taken: an e-fold.
             Damping::Critical => {
                 let (e, em) = exp_and_m1(-omega * t);
                 let b = v0 + omega * delta;
-                let (departed, moved) = (delta * em, e * b * t);
-                let plain = e * delta;
-                let y = if departed.abs() + moved.abs() <= plain.abs() + moved.abs() + delta.abs() {
-                    departed + moved
+                let from_departure = omega * t <= F::ONE;
+                let y = if from_departure {
+                    delta * em
                 } else {
-                    plain + moved - delta
-                };
+                    e * delta - delta
+                } + e * b * t;
                 (y, e * (v0 - omega * b * t))
+            }
+            Damping::Over { slow, fast } if slow - fast <= omega * c::<F>(0.25) => {
+                // Near critical damping (zeta up to 1.008) the modes' amplitudes grow as one
+                // over their rates' difference and cancel (f32, zeta 1.0006: 3.8 times the
+                // figure): x = e^(-sigma t) (Delta cosh bt + (v0 + sigma Delta) sinh(bt) / b),
+                // sigma = zeta Omega, b = Omega sqrt(zeta^2 - 1), whose terms stay the size of
+                // the motion; e^(-sigma t) cosh bt - 1 is the mean of the modes' expm1, and
+                // e^(-sigma t) sinh(bt) / b = (expm1(s t) - expm1(f t)) / (s - f) below
+                // (both expm1 near -s t, f t: no digits lost where bt is small).
+                // As below, y from the departure or from the motion, whichever rounds less.
+                let (es, ems) = exp_and_m1(slow * t);
+                let (ef, emf) = exp_and_m1(fast * t);
+                let sigma = -(slow + fast) * F::HALF;
+                let sinh_over = (ems - emf) / (slow - fast);
+                let cosh = (es + ef) * F::HALF;
+                let swing = (v0 + sigma * delta) * sinh_over;
+                let (departed, moved) = (delta * (ems + emf) * F::HALF, delta * cosh);
+                let y = if departed.abs() <= moved.abs() + delta.abs() {
+                    departed + swing
+                } else {
+                    moved + swing - delta
+                };
+                (
+                    y,
+                    v0 * cosh - (sigma * v0 + omega * omega * delta) * sinh_over,
+                )
             }
             Damping::Over { slow, fast } => {
                 // A_s + A_f = Delta, each amplitude from its own numerator: A_f as Delta - A_s
@@ -307,8 +332,8 @@ impl<F: Float, S: OffsetSign> Oscillator<F, S> {
                 let amp_fast = (slow * delta - v0) / (slow - fast);
                 let (es, ems) = exp_and_m1(slow * t);
                 let (ef, emf) = exp_and_m1(fast * t);
-                let (ds, df) = (amp_slow * ems, amp_fast * emf);
                 let (ms, mf) = (amp_slow * es, amp_fast * ef);
+                let (ds, df) = (amp_slow * ems, amp_fast * emf);
                 let y = if ds.abs() + df.abs() <= ms.abs() + mf.abs() + delta.abs() {
                     ds + df
                 } else {
@@ -704,6 +729,9 @@ pub(crate) trait Flights<F: Float> {
     fn rounding(&self) -> (F, F) {
         (F::ZERO, F::ZERO)
     }
+    /// Whether [`Flights::rounding`] can be other than (0, 0) (a constant: where it is not,
+    /// the exact tier links none of its bookkeeping).
+    const ROUNDED: bool = false;
 }
 
 /// Viscous damping's flights, with the next guess from the last flight.
@@ -959,9 +987,11 @@ fn solve<F: Float, D: Dissipation<F>, M: Flights<F> + Copy, S: OffsetSign, const
                 time.add(t);
                 // Taken 4 times, as the bound of a difference of terms each rounded a few
                 // times.
-                let (moved, speed_error) = flights.rounding();
-                conditioned += c::<F>(4.0) * moved + inherited * t;
-                inherited += c::<F>(4.0) * speed_error;
+                if M::ROUNDED {
+                    let (moved, speed_error) = flights.rounding();
+                    conditioned += c::<F>(4.0) * moved + inherited * t;
+                    inherited += c::<F>(4.0) * speed_error;
+                }
                 if let Some(before) = before {
                     last_return = Some((before, departure, t));
                 }
@@ -1059,7 +1089,16 @@ fn solve<F: Float, D: Dissipation<F>, M: Flights<F> + Copy, S: OffsetSign, const
     }
     // Rounding compounds at worst linearly over the flights solved; a tail or the averaged
     // rest adds its own error in proportion to its share of the bounce time.
-    let rounding = c::<F>(ROUNDING_PER_FLIGHT) * F::EPSILON * count;
+    // Overdamped, a flight's closed form is a difference of its two modes, each up to
+    // 1 / (2 sqrt(zeta^2 - 1)) times the motion's size: near critical damping that many more
+    // epsilons (f32 at zeta 1.003-1.006: the flights' rounding 2-4 times the plain figure).
+    let zeta = scene.dissipation().damping_ratio();
+    let overdamped = if zeta > F::ONE {
+        F::ONE + F::HALF / ((zeta - F::ONE) * (zeta + F::ONE)).sqrt()
+    } else {
+        F::ONE
+    };
+    let rounding = c::<F>(ROUNDING_PER_FLIGHT) * F::EPSILON * count * overdamped;
     let total = end_time
         .seconds()
         .or(last_above_time.seconds())
