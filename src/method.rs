@@ -30,6 +30,27 @@ impl<F: Float> Tolerance<F> {
 }
 
 /// The tier of fidelity to predict with.
+///
+/// # What a call costs
+///
+/// Every tier's work is bounded by its settings, known before the call; none loops on its
+/// input. In evaluations (a few dozen float operations each; on a Cortex-M4F in f32, an impact of
+/// the map is about 300 instructions, `docs/cost-report.md`):
+/// - `Closed`: a fixed handful of logarithms and roots.
+/// - `Averaged(n)`: at most 2,000 panels of `n` nodes for each of the (at most three) integrals a
+///   prediction takes; with a relaxation kernel each node sums the kernel's harmonics.
+/// - `Map { max_impacts }`: at most `max_impacts` impacts, then the averaged model (N8): linear
+///   in the cap. `u32::MAX` is four billion impacts, minutes on a desktop: a cap is a promise
+///   of work, not a hint.
+/// - `Exact { max_impacts }`: at most [`Scene::exact_work`]`(max_impacts)` evaluations of the
+///   motion (134 a flight without a kernel, at most
+///   [`KERNEL_FLIGHT_STEPS`](crate::tiers::KERNEL_FLIGHT_STEPS) with one), then the averaged
+///   model.
+/// - `Auto(_)`: the closed tier, then each other tier at most once at its default cap: at
+///   worst the three together, the exact tier's at
+///   [`EXACT_MAX_IMPACTS`](crate::tiers::EXACT_MAX_IMPACTS) dominating (on a kernel of long
+///   memory, up to 100,000 x 4,096 evaluations: the fuzzing harness's slowest calls, its
+///   report in `docs/fuzz.md`, are of this kind).
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[non_exhaustive]

@@ -314,10 +314,25 @@ pub(crate) fn with_reduction<F: Float, D: Dissipation<F>, S: OffsetSign>(
     scene: &Scene<F, D, S>,
     expected: Option<F>,
 ) -> Option<F> {
-    let share = static_share(scene);
-    // (`has_kernel` first: a type without a kernel folds the test away.)
+    // At low restitution, with a kernel of long memory, the few flights leave the kernel's
+    // force further from the steady state the averaging assumes: the share's effect grows as
+    // 1 + 0.08 Omega tau / R (Omega tau at most 1 wherever a figure is stated). Measured on
+    // averaged predictions (N8 and N20) with a kernel against the exact tier: the factor the
+    // worst needed was 1 + k Omega tau / R with k from 0.054 to 0.069 (R 0.05-0.066, Omega tau
+    // 0.4-0.94, shares 0.1-0.13), where the plain share was exceeded by up to 1.49 times the
+    // figure; the outside harness of issue 49 found it first.
+    let plain = static_share(scene);
     let dissipation = scene.dissipation();
-    if share > c(LARGEST_STATIC_SHARE)
+    // (`has_kernel` first: a type without a kernel links none of it.)
+    let share = if dissipation.has_kernel() {
+        let memory = (scene.omega() * dissipation.longest_relaxation()).min(F::ONE);
+        let restitution = scene.restitution().max(c(0.025));
+        plain * (F::ONE + c::<F>(0.08) * memory / restitution)
+    } else {
+        plain
+    };
+    // (`has_kernel` first: a type without a kernel folds the test away.)
+    if plain > c(LARGEST_STATIC_SHARE)
         || (dissipation.has_kernel()
             && scene.omega() * dissipation.longest_relaxation() > c(LONGEST_KERNEL_MEMORY))
     {
