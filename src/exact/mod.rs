@@ -299,35 +299,12 @@ impl<F: Float, S: OffsetSign> Oscillator<F, S> {
                 } + e * b * t;
                 (y, e * (v0 - omega * b * t))
             }
-            Damping::Over { slow, fast } if slow - fast <= omega * c::<F>(0.25) => {
-                // Near critical damping (zeta up to 1.008) the modes' amplitudes grow as one
-                // over their rates' difference and cancel (f32, zeta 1.0006: 3.8 times the
-                // figure): x = e^(-sigma t) (Delta cosh bt + (v0 + sigma Delta) sinh(bt) / b),
-                // sigma = zeta Omega, b = Omega sqrt(zeta^2 - 1), whose terms stay the size of
-                // the motion; e^(-sigma t) cosh bt - 1 is the mean of the modes' expm1, and
-                // e^(-sigma t) sinh(bt) / b = (expm1(s t) - expm1(f t)) / (s - f) below
-                // (both expm1 near -s t, f t: no digits lost where bt is small).
-                // As below, y from the departure or from the motion, whichever rounds less.
-                let (es, ems) = exp_and_m1(slow * t);
-                let (ef, emf) = exp_and_m1(fast * t);
-                let sigma = -(slow + fast) * F::HALF;
-                let sinh_over = (ems - emf) / (slow - fast);
-                let cosh = (es + ef) * F::HALF;
-                let swing = (v0 + sigma * delta) * sinh_over;
-                let (departed, moved) = (delta * (ems + emf) * F::HALF, delta * cosh);
-                let y = if departed.abs() <= moved.abs() + delta.abs() {
-                    departed + swing
-                } else {
-                    moved + swing - delta
-                };
-                (
-                    y,
-                    v0 * cosh - (sigma * v0 + omega * omega * delta) * sinh_over,
-                )
-            }
             Damping::Over { slow, fast } => {
                 // A_s + A_f = Delta, each amplitude from its own numerator: A_f as Delta - A_s
                 // lost the many epsilons by which it is smaller (1/142 of Delta at zeta 7).
+                // Near critical damping both grow as 1 / (s - f) and cancel: the figure counts
+                // that (`solve`), where a cosh/sinh form would cost the Uno's exact tier the
+                // flash it does not have.
                 let amp_slow = (v0 - fast * delta) / (slow - fast);
                 let amp_fast = (slow * delta - v0) / (slow - fast);
                 let (es, ems) = exp_and_m1(slow * t);
