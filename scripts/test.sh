@@ -190,7 +190,8 @@ if [ -f ../shared/data/bouncy-button-uno.jsonl ]; then
   diff -r "$plots/replay" docs/replay
   rm -rf "$plots"
   # The keyboard matrix: 100 keys of each real switch typed on (bounce-table/tests/matrix.rs).
-  CAPTURE=../shared/data/bouncy-button-uno.jsonl cargo test --quiet -p bounce-table --test matrix -- --ignored --nocapture
+  # (an absolute path: the test runs in its package's directory)
+  CAPTURE="$PWD/../shared/data/bouncy-button-uno.jsonl" cargo test --quiet -p bounce-table --test matrix -- --ignored --nocapture
   python3 - "$replay" <<'PY'
 import sys
 doc = sys.argv[1]
