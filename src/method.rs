@@ -82,8 +82,9 @@ pub enum Method<F> {
     /// weighed as on a Cortex-M4F, `docs/cost-report.md`), the exact tier always among them, as
     /// it promises the float's rounding on every one-body scene with at most one kernel. Where
     /// nothing does (two kernels; f32 over very many impacts; a return decided by rounding;
-    /// more flights than the exact tier's cap) the smallest expected error wins, and between
-    /// equal ones an answer with a bounce time: check [`Prediction::promises`]. Its worst-case
+    /// more flights than the exact tier's cap) the smallest expected error wins (the closed
+    /// forms' answer with neither a figure nor a time ranks after every other): check
+    /// [`Prediction::promises`]. Its worst-case
     /// work is the
     /// exact
     /// tier's at [`EXACT_MAX_IMPACTS`](crate::tiers::EXACT_MAX_IMPACTS)
@@ -96,9 +97,9 @@ pub enum Method<F> {
 /// The tiers [`Scene::predict_auto_among`] may run after the closed forms (which Auto always
 /// tries first), as bit flags to OR together. Named at compile time, the set decides what is
 /// linked: `AutoTiers::EXACT` alone links the closed forms and the exact tier, and no map,
-/// no averaged quadrature and none of their expected errors (on the Cortex-M4F, 12.7 KB of
-/// crate code against Auto's 17.2 KB; on the Uno neither fits its 32 KB beside the rest of a
-/// firmware, the exact tier alone does: `docs/cost-report.md`, auto-exact and exact).
+/// no averaged quadrature and none of their expected errors (on the Uno, Auto among all tiers
+/// does not fit its 32 KB; among the closed forms and the exact tier it does:
+/// `docs/cost-report.md`, auto-exact).
 ///
 /// ```
 /// use contact_bounce::{catalogue, tiers::AutoTiers, Tolerance};
@@ -337,16 +338,13 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
                 }
             }
         }
-        // The smaller expected error; between equal ones (none stated, say), an answer with a
-        // bounce time over one without: a tier that finds the time where another cannot (the
-        // closed tier's asymptote outside its validity on an endless scene with a threshold)
-        // is never passed over for the one that does not.
+        // The smaller expected error wins. The closed tier's answer with neither a figure nor
+        // a time (its asymptote outside its validity on an endless scene with a threshold)
+        // ranks after every other: a tier that finds the time is never passed over for it.
         let rank = |p: &Prediction<F>| p.expected_error.unwrap_or(F::MAX);
-        let timed = |p: &Prediction<F>| {
-            matches!(p.end_time, Time::At(_)) || matches!(p.last_above_time, Time::At(_))
-        };
-        let better = |p: &Prediction<F>, than: &Prediction<F>| {
-            rank(p) < rank(than) || (rank(p) == rank(than) && !timed(than) && timed(p))
+        let mut best_rank = match (closed.expected_error, closed.last_above_time) {
+            (None, Time::Never) => F::MAX * F::TWO,
+            _ => rank(&closed),
         };
         let mut best = closed;
         let mut ran = [false; 3];
@@ -359,16 +357,16 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
                 if let Some(done) = ran.get_mut(candidate.index()) {
                     *done = true;
                 }
-                if better(&p, &best) {
-                    best = p;
+                if rank(&p) < best_rank {
+                    (best, best_rank) = (p, rank(&p));
                 }
             }
         }
         for (done, candidate) in ran.into_iter().zip(Candidate::ALL) {
             if !done {
                 let p = self.run::<TIERS>(candidate, &closed);
-                if better(&p, &best) {
-                    best = p;
+                if rank(&p) < best_rank {
+                    (best, best_rank) = (p, rank(&p));
                 }
             }
         }

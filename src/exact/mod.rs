@@ -373,12 +373,20 @@ impl<F: Float, S: OffsetSign> Oscillator<F, S> {
             }
             Damping::Over { slow, fast } => {
                 // x' = 0 where e^((s - f) t) = -f A_f / (s A_s) = 1 + a / (s A_s) (the numerator
-                // -f A_f - s A_s is a exactly), taken as ln_1p: formed as a ratio of the
+                // -f A_f - s A_s is a exactly), taken as ln(1 + x): formed as a ratio of the
                 // amplitudes it rounded to 1 for departures below an epsilon of Omega |Delta|,
                 // and the preload's flight was taken for one that stays.
+                // (ln(1 + x) by Goldberg's form, ln(u) x / (u - 1) with u = 1 + x, within a few
+                // ulps: no `ln_1p` linked for it.)
                 let amp_slow = (-a - fast * delta) / (slow - fast);
-                let excess = a / (slow * amp_slow);
-                (excess > F::ZERO).then(|| excess.ln_1p() / (slow - fast))
+                let x = a / (slow * amp_slow);
+                let u = F::ONE + x;
+                let ln = if u == F::ONE {
+                    x
+                } else {
+                    u.ln() * x / (u - F::ONE)
+                };
+                (x > F::ZERO).then(|| ln / (slow - fast))
             }
         }
     }
