@@ -364,7 +364,12 @@ impl<F: Float> Flights<F> for Kernel<F> {
             let (e, decay) = ((self.real * t).exp(), (self.alpha * t).exp());
             let pull = (self.force - self.omega2 * self.delta).abs();
             let moved = m.u1.abs() * (e - F::ONE).abs() + (F::ONE + decay) * m.uc.hypot(m.us);
-            let force = F::EPSILON * (self.force.abs() + moved) / pull;
+            // (No pull at the stop: no figure; `solve` takes an infinite error as none.)
+            let force = if pull > F::ZERO {
+                F::EPSILON * (self.force.abs() + moved) / pull
+            } else {
+                F::MAX * F::TWO
+            };
             self.rounding = if self.lambda * t > c(SERIES_LIMIT) {
                 let (slow, pair) = (m.c1.abs() * e, decay * m.p.hypot(m.q));
                 let rates = (self.alpha * self.alpha + self.w * self.w).sqrt();
