@@ -339,12 +339,18 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
             }
         }
         // The smaller expected error wins. The closed tier's answer with neither a figure nor
-        // a time (its asymptote outside its validity on an endless scene with a threshold)
-        // ranks after every other: a tier that finds the time is never passed over for it.
+        // a time (its asymptote outside its validity on an endless scene with a threshold, or
+        // a time past the float's range, not yet turned into `Never`) ranks after every
+        // other: a tier that finds the time is never passed over for it.
         let rank = |p: &Prediction<F>| p.expected_error.unwrap_or(F::MAX);
-        let mut best_rank = match (closed.expected_error, closed.last_above_time) {
-            (None, Time::Never) => F::MAX * F::TWO,
-            _ => rank(&closed),
+        let timeless = match closed.last_above_time {
+            Time::At(t) => !t.is_finite(),
+            Time::Never => true,
+        };
+        let mut best_rank = if closed.expected_error.is_none() && timeless {
+            F::MAX * F::TWO
+        } else {
+            rank(&closed)
         };
         let mut best = closed;
         let mut ran = [false; 3];

@@ -50,7 +50,10 @@ fn exact<F: Float>(
 
 /// The f32 exact tier against the f64 one on a scene: the f32 time within both figures of the
 /// f64 time where f32 states one, and never 0 where f64 has a positive time. `None` where a
-/// tier refuses or f64 has no figure.
+/// tier refuses or f64 has no figure. Both solve the scene of the inputs rounded to f32: a
+/// figure states the rounding of the work on the inputs the call was given, not that of
+/// rounding a caller's f64 values (about 1e-7 each, which sets the last scene of the kernel
+/// family apart by 1.2e-6 against a figure of 9.6e-7; 9.4e-7 on its rounded inputs).
 fn f32_holds(
     omega: f64,
     delta: f64,
@@ -60,6 +63,17 @@ fn f32_holds(
     zeta: f64,
     kernel: Option<(f64, f64)>,
 ) -> Option<bool> {
+    #[allow(clippy::cast_possible_truncation)]
+    let f32 = |x: f64| f64::from(x as f32);
+    let (omega, delta, r, v0, impulse, zeta) = (
+        f32(omega),
+        f32(delta),
+        f32(r),
+        f32(v0),
+        f32(impulse),
+        f32(zeta),
+    );
+    let kernel = kernel.map(|(kappa, tau)| (f32(kappa), f32(tau)));
     let threshold = |t: f64| {
         if t > 0.0 {
             Threshold::Impulse(t)
@@ -248,6 +262,50 @@ fn auto_gives_a_time_where_the_exact_tier_does() {
     let (auto, exact) = auto_and_exact::<f32>();
     assert!(exact.is_some(), "{exact:?}");
     assert_eq!(auto, exact);
+}
+
+#[test]
+fn auto_gives_a_time_where_the_closed_tiers_is_past_the_float() {
+    // Found by the widened fuzzing harness (f32): gaps of a few femtometres at R within 1e-8 of
+    // 1 and a trace of damping, with and without a weak kernel. The closed tier's time is past
+    // f32's range before the prediction turns it into `Never`, and Auto kept it (no figure,
+    // and no time) where every other tier finds one (1.2e8 s, 3.6e9 s).
+    let scenes = [
+        (
+            contact::<f32>(
+                1.214_862_6e-1,
+                2.959_449_7e-15,
+                0.999_999_995_320_998_3,
+                1.406_913_6e2,
+                Threshold::None,
+            ),
+            7.321_306e-10,
+            Some((1.370_824e-5, 2.263_288_3e-1)),
+        ),
+        (
+            contact::<f32>(
+                2.335_665,
+                4.373_529e-14,
+                1.0,
+                3.285_468_4e3,
+                Threshold::None,
+            ),
+            4.501_454e-9,
+            None,
+        ),
+    ];
+    let auto = Method::Auto(Tolerance::new(0.01_f32).unwrap());
+    for (c, zeta, kernel) in scenes {
+        let viscous = Viscous::optional(zeta as f32).unwrap();
+        let p = match kernel {
+            Some((kappa, tau)) => {
+                let k = Hereditary::exponential(kappa as f32, tau as f32).unwrap();
+                Scene::new(c, (viscous, k)).unwrap().predict(auto)
+            }
+            None => Scene::new(c, viscous).unwrap().predict(auto),
+        };
+        assert!(p.bounce_time().is_some_and(|t| t > 1e8), "{c:?}: {p:?}");
+    }
 }
 
 /// The averaged tier (N8 and N20) against the f64 exact tier on a kernel scene: within both
