@@ -476,6 +476,19 @@ pub struct Skipped {
 }
 
 impl Skipped {
+    /// Adds `other`'s counts and sections (another file of the same capture).
+    pub fn add(&mut self, other: Skipped) {
+        self.marked_invalid += other.marked_invalid;
+        self.marked_invalid_elsewhere += other.marked_invalid_elsewhere;
+        self.named += other.named;
+        self.several_presses += other.several_presses;
+        for s in other.sections {
+            if !self.sections.contains(&s) {
+                self.sections.push(s);
+            }
+        }
+    }
+
     /// Tests or events left out in all.
     #[must_use]
     pub fn total(&self) -> usize {

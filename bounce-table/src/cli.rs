@@ -13,6 +13,7 @@ use crate::eval::{self, EvalMethod, Precision};
 use crate::output::Format;
 use crate::priors::{self, Prior};
 use crate::replay;
+use crate::scope;
 use contact_bounce::Nodes;
 
 /// The most worker threads `--threads` takes: each is a stack, and a run asks for no more
@@ -389,7 +390,8 @@ fn tap_count(v: &str) -> Result<usize, String> {
 
 const CALIBRATE_ABOUT: &str =
     "calibrate: describes a capture (JSON Lines of the bouncy-button format, a CSV of `time,level`
-rows, or a VCD; format from the extension) per switch and kind (bounce P50/P90/P99/max,
+rows, a VCD, or an oscilloscope's CSV export of volts, read through an input's two thresholds;
+format from the extension and the header) per switch and kind (bounce P50/P90/P99/max,
 transitions, resolved flights and dwells, chatter), fits the impact model and a bounce model
 with empirical terms (clean share, log-normal bursts, late bursts), checks them and the
 empirical quantiles on held-out halves, and recommends windows. High = open unless
@@ -432,9 +434,25 @@ enum Written {
 /// The capture and how to read and calibrate it (`calibrate`'s, and `replay`'s).
 #[derive(Args, Debug)]
 struct CaptureArgs {
-    /// jsonl, csv or vcd (default: from the file's extension)
+    /// jsonl, csv (time,level rows), vcd; a scope's export: rigol, siglent, keysight,
+    /// tektronix, or volts (time,volts rows). Default: from the extension; a .csv file or a
+    /// folder of them recognised by its header
     #[arg(long, value_name = "F", value_parser = capture_format)]
     capture_format: Option<CaptureFormat>,
+    /// An analog capture's channel (CH1 or 1; default: the only one)
+    #[arg(long, value_name = "NAME")]
+    channel: Option<String>,
+    /// An analog capture read by this MCU's input thresholds (its datasheet's V_IL and V_IH):
+    /// atmega328p, rp2040, stm32f103, stm32f030 or esp32 (default: 30 % and 70 % of the
+    /// trace's swing)
+    #[arg(long, value_name = "MCU", value_parser = mcu, conflicts_with = "thresholds")]
+    input: Option<&'static scope::Preset>,
+    /// An analog capture read with these thresholds, LOW,HIGH in volts
+    #[arg(long, value_name = "LOW,HIGH", value_parser = volt_pair)]
+    thresholds: Option<(f64, f64)>,
+    /// The supply the --input thresholds scale with (V; default: the trace's high level)
+    #[arg(long, value_name = "V", value_parser = volts, requires = "input")]
+    vcc: Option<f64>,
     /// Intervals shorter than S are chatter, not timed
     #[arg(long, value_name = "S", default_value_t = 3e-6, value_parser = seconds)]
     resolution: f64,
@@ -469,12 +487,23 @@ impl CaptureArgs {
     fn into_options(self) -> Result<calibrate::Options, String> {
         let format = match self.capture_format {
             Some(f) => f,
+            None if std::path::Path::new(&self.file).is_dir() => CaptureFormat::Scope(None),
             None => match self.file.rsplit('.').next() {
                 Some("jsonl") => CaptureFormat::Jsonl,
-                Some("csv") => CaptureFormat::Csv,
+                Some("csv") => CaptureFormat::Scope(None),
                 Some("vcd") => CaptureFormat::Vcd,
-                _ => return Err(format!("{}: say --capture-format jsonl|csv|vcd", self.file)),
+                _ => {
+                    return Err(format!(
+                        "{}: say --capture-format (jsonl, csv, vcd, rigol, siglent, keysight, tektronix or volts)",
+                        self.file
+                    ))
+                }
             },
+        };
+        let input = match (self.input, self.thresholds) {
+            (Some(p), _) => scope::Input::Preset(p, self.vcc),
+            (None, Some((low, high))) => scope::Input::Volts(low, high),
+            (None, None) => scope::Input::Swing,
         };
         Ok(calibrate::Options {
             file: self.file,
@@ -483,6 +512,8 @@ impl CaptureArgs {
             burst_gap: self.burst_gap,
             quiet: self.quiet,
             signal: self.signal,
+            channel: self.channel,
+            input,
             polarity: if self.active_high {
                 Polarity::ActiveHigh
             } else {
@@ -614,7 +645,34 @@ fn capture_format(v: &str) -> Result<CaptureFormat, String> {
         "jsonl" => Ok(CaptureFormat::Jsonl),
         "csv" => Ok(CaptureFormat::Csv),
         "vcd" => Ok(CaptureFormat::Vcd),
-        _ => Err("not jsonl, csv or vcd".to_owned()),
+        _ => scope::Vendor::parse(v)
+            .map(|vendor| CaptureFormat::Scope(Some(vendor)))
+            .ok_or_else(|| {
+                "not jsonl, csv, vcd, rigol, siglent, keysight, tektronix or volts".to_owned()
+            }),
+    }
+}
+
+fn mcu(v: &str) -> Result<&'static scope::Preset, String> {
+    scope::preset(v).ok_or_else(|| {
+        let names: Vec<&str> = scope::PRESETS.iter().map(|p| p.name).collect();
+        format!("not one of {}", names.join(", "))
+    })
+}
+
+fn volts(v: &str) -> Result<f64, String> {
+    positive(v).map_err(|_| "not a positive number of volts".to_owned())
+}
+
+fn volt_pair(v: &str) -> Result<(f64, f64), String> {
+    let parsed: Vec<Option<f64>> = v
+        .split(',')
+        .map(|x| x.trim().parse::<f64>().ok().filter(|x| x.is_finite()))
+        .collect();
+    match parsed[..] {
+        [Some(low), Some(high)] if low < high => Ok((low, high)),
+        [Some(low), Some(high)] => Err(format!("{low} is not below {high}: give LOW,HIGH")),
+        _ => Err("not two numbers of volts, LOW,HIGH".to_owned()),
     }
 }
 
@@ -652,8 +710,23 @@ mod tests {
         );
         let o =
             calibrate(&["--burst-gap", "2e-2", "--percentile", "99.9", "c.csv"]).expect("valid");
-        assert_eq!((o.burst_gap, o.format), (2e-2, CaptureFormat::Csv));
+        // A .csv file is recognised by its header when it is read: a scope's or levels.
+        assert_eq!((o.burst_gap, o.format), (2e-2, CaptureFormat::Scope(None)));
         assert!((o.percentile - 0.999).abs() < 1e-15);
+        let o =
+            calibrate(&["--capture-format", "rigol", "--channel", "2", "c.csv"]).expect("valid");
+        assert_eq!(
+            (o.format, o.channel.as_deref()),
+            (CaptureFormat::Scope(Some(scope::Vendor::Rigol)), Some("2"))
+        );
+        assert_eq!(o.input, scope::Input::Swing);
+        let o = calibrate(&["--input", "rp2040", "c.csv"]).expect("valid");
+        assert_eq!(
+            o.input,
+            scope::Input::Preset(scope::preset("rp2040").expect("a preset"), None)
+        );
+        let o = calibrate(&["--thresholds", "0.8,2", "c.csv"]).expect("valid");
+        assert_eq!(o.input, scope::Input::Volts(0.8, 2.0));
         let o = calibrate(&["--format=rust", "c.csv"]).expect("valid");
         assert_eq!((o.export, o.events), (Some(true), false));
         // A repeatable option keeps every value; any other, the last one given.
@@ -683,6 +756,14 @@ mod tests {
             (&["--format", "java", "c.csv"], "--format"),
             (&["--format", "vcd", "c.csv"], "--capture-format vcd"),
             (&["--capture-format", "wav", "c.csv"], "--capture-format"),
+            (&["--input", "z80", "c.csv"], "--input"),
+            (&["--thresholds", "2,1", "c.csv"], "--thresholds"),
+            (&["--thresholds", "1", "c.csv"], "--thresholds"),
+            (
+                &["--input", "rp2040", "--thresholds", "1,2", "c.csv"],
+                "--thresholds",
+            ),
+            (&["--vcc", "3.3", "c.csv"], "--input"),
             (&["a.csv", "b.csv"], "b.csv"),
             (&[], "CAPTURE"),
         ] {

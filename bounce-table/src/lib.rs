@@ -15,6 +15,7 @@ pub mod priors;
 pub mod replay;
 pub mod scene_input;
 pub mod scenes;
+pub mod scope;
 pub mod spool;
 pub mod spreads;
 pub mod strict;

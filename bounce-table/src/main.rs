@@ -134,7 +134,11 @@ fn taps_main(
 
 /// `bounce-table replay`.
 fn replay_main(request: &replay::Request) -> ExitCode {
-    let (events, skipped) = match calibrate::load(&request.capture) {
+    let calibrate::Loaded {
+        events,
+        skipped,
+        analog,
+    } = match calibrate::load(&request.capture) {
         Ok(x) => x,
         Err(e) => {
             eprintln!("bounce-table replay: {e}");
@@ -189,6 +193,9 @@ fn replay_main(request: &replay::Request) -> ExitCode {
         replay::Output::Json => out!("{}", replay::json(&lines)),
         replay::Output::Curve => {}
         replay::Output::Markdown => {
+            for a in &analog {
+                outln!("{}", a.markdown());
+            }
             if skipped.total() > 0 {
                 outln!("{}\n", skipped.describe(request.capture.quiet));
             }
@@ -274,7 +281,11 @@ fn calibrate_main(options: &calibrate::Options) -> ExitCode {
             return ExitCode::from(2);
         }
     }
-    let (events, skipped) = match calibrate::load(options) {
+    let calibrate::Loaded {
+        events,
+        skipped,
+        analog,
+    } = match calibrate::load(options) {
         Ok(x) => x,
         Err(e) => {
             eprintln!("bounce-table calibrate: {e}");
@@ -351,6 +362,9 @@ fn calibrate_main(options: &calibrate::Options) -> ExitCode {
             );
             if skipped.total() > 0 {
                 report.push_str(&format!("\n{}\n", skipped.describe(options.quiet)));
+            }
+            for a in &analog {
+                report.push_str(&format!("\n{}", a.markdown()));
             }
             report.push_str(&calibrate::by_section(&groups));
             report.push_str(&calibrate::assess(

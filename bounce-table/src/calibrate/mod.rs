@@ -20,7 +20,7 @@ pub use fit::{reopening_threshold, BounceModel, ImpactFit, LogNormal, MIN_FIT};
 pub use heldout::{
     random_splits, validations, RatioSpread, Validation, RANDOM_SPLITS, VALIDATION_QUANTILES,
 };
-pub use options::{load, Format, Options};
+pub use options::{load, Format, Loaded, Options};
 pub use plot::plot;
 pub use predictive::{inverse, Part, Predictive};
 pub use report::{assess, by_section, describe, summary};

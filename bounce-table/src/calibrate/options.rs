@@ -1,6 +1,7 @@
 //! What `calibrate` is asked for: its options and the capture they name.
 
 use crate::capture::{self, CaptureError, Event, Polarity};
+use crate::scope;
 
 /// The capture's format.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -11,6 +12,9 @@ pub enum Format {
     Csv,
     /// Value Change Dump.
     Vcd,
+    /// A scope's export (or `time,volts` rows) of this vendor; `None`: a CSV recognised by its
+    /// header, a scope's export or `time,level` rows (the default for `.csv` files and folders).
+    Scope(Option<scope::Vendor>),
 }
 
 /// What `calibrate` was asked for.
@@ -29,6 +33,10 @@ pub struct Options {
     pub quiet: f64,
     /// The VCD signal.
     pub signal: Option<String>,
+    /// An analog capture's channel (the only one when `None`).
+    pub channel: Option<String>,
+    /// An analog capture's thresholds.
+    pub input: scope::Input,
     /// High = closed.
     pub polarity: Polarity,
     /// JSON Lines sections to leave out.
@@ -52,34 +60,121 @@ pub struct Options {
     pub min_tap: Option<f64>,
 }
 
+/// What [`load`] read: the events, what it left out, and for an analog capture its report.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Loaded {
+    /// The events, in capture order.
+    pub events: Vec<Event>,
+    /// What was left out, and why.
+    pub skipped: capture::Skipped,
+    /// An analog capture's swing, noise, edges, thresholds and marginal dips (one per file).
+    pub analog: Vec<scope::Report>,
+}
+
 /// Reads the capture into events, leaving out what cannot be one press or release (see
 /// [`capture::Skipped`]): sections the capture marks invalid, sections named by
 /// `--skip-section`, and events with a quiet interval longer than `--quiet` inside (several
-/// presses).
+/// presses). A folder is read file by file (in name order; hidden files left out), each an
+/// acquisition or several, all of one switch named after the folder.
 ///
 /// # Errors
 /// The file cannot be read, or its content is malformed (named file and line).
-pub fn load(o: &Options) -> Result<(Vec<Event>, capture::Skipped), CaptureError> {
-    let text = std::fs::read_to_string(&o.file).map_err(|e| CaptureError {
-        file: o.file.clone(),
+pub fn load(o: &Options) -> Result<Loaded, CaptureError> {
+    let path = std::path::Path::new(&o.file);
+    let unreadable = |file: &str, e: std::io::Error| CaptureError {
+        file: file.to_owned(),
         line: 0,
         reason: e.to_string(),
-    })?;
-    let name = std::path::Path::new(&o.file)
+    };
+    let name = path
         .file_stem()
         .map_or_else(|| o.file.clone(), |s| s.to_string_lossy().into_owned());
-    let (events, mut skipped) = match o.format {
-        Format::Jsonl => capture::read_jsonl(&o.file, &text, &o.skip_sections)?,
-        Format::Csv => (
-            capture::read_csv(&o.file, &text, o.polarity)?.segment(&name, o.quiet),
-            capture::Skipped::default(),
-        ),
-        Format::Vcd => (
-            capture::read_vcd(&o.file, &text, o.signal.as_deref(), o.polarity)?
-                .segment(&name, o.quiet),
-            capture::Skipped::default(),
-        ),
+    let files: Vec<String> = if path.is_dir() {
+        let mut files: Vec<String> = std::fs::read_dir(path)
+            .map_err(|e| unreadable(&o.file, e))?
+            .filter_map(Result::ok)
+            .filter(|e| e.path().is_file() && !e.file_name().to_string_lossy().starts_with('.'))
+            .map(|e| e.path().to_string_lossy().into_owned())
+            .collect();
+        files.sort();
+        if files.is_empty() {
+            return Err(CaptureError {
+                file: o.file.clone(),
+                line: 0,
+                reason: "an empty folder: no capture to read".to_owned(),
+            });
+        }
+        files
+    } else {
+        vec![o.file.clone()]
     };
-    let events = capture::drop_several_presses(events, o.quiet, &mut skipped);
-    Ok((events, skipped))
+    let mut loaded = Loaded {
+        events: Vec::new(),
+        skipped: capture::Skipped::default(),
+        analog: Vec::new(),
+    };
+    for file in &files {
+        let text = std::fs::read_to_string(file).map_err(|e| unreadable(file, e))?;
+        let several = files.len() > 1;
+        let (mut events, skipped) = read_one(o, file, &text, &name, several, &mut loaded.analog)?;
+        loaded.events.append(&mut events);
+        loaded.skipped.add(skipped);
+    }
+    let events = std::mem::take(&mut loaded.events);
+    loaded.events = capture::drop_several_presses(events, o.quiet, &mut loaded.skipped);
+    Ok(loaded)
+}
+
+/// One file of the capture: its events, what it left out, and its analog report if it has one.
+fn read_one(
+    o: &Options,
+    file: &str,
+    text: &str,
+    name: &str,
+    several: bool,
+    analog: &mut Vec<scope::Report>,
+) -> Result<(Vec<Event>, capture::Skipped), CaptureError> {
+    let format = match o.format {
+        Format::Scope(None) if scope::recognise(text).is_none() => Format::Csv,
+        f => f,
+    };
+    let events = match format {
+        Format::Jsonl => return capture::read_jsonl(file, text, &o.skip_sections),
+        Format::Csv => capture::read_csv(file, text, o.polarity)?.segment(name, o.quiet),
+        Format::Vcd => {
+            capture::read_vcd(file, text, o.signal.as_deref(), o.polarity)?.segment(name, o.quiet)
+        }
+        Format::Scope(vendor) => {
+            let (streams, report) = scope::load(
+                file,
+                text,
+                vendor,
+                o.channel.as_deref(),
+                &o.input,
+                o.polarity,
+            )?;
+            analog.push(report);
+            let base = std::path::Path::new(file)
+                .file_name()
+                .map_or_else(|| file.to_owned(), |s| s.to_string_lossy().into_owned());
+            let acquisitions = streams.len();
+            let mut events = Vec::new();
+            for (k, stream) in streams.iter().enumerate() {
+                for mut e in stream.segment(name, o.quiet) {
+                    let mut at = Vec::new();
+                    if several {
+                        at.push(base.clone());
+                    }
+                    if acquisitions > 1 {
+                        at.push(format!("acquisition {}", k + 1));
+                    }
+                    at.push(e.origin);
+                    e.origin = at.join(", ");
+                    events.push(e);
+                }
+            }
+            events
+        }
+    };
+    Ok((events, capture::Skipped::default()))
 }
