@@ -384,6 +384,18 @@ fn captures_are_read_or_refused_by_line() {
         "/tests/fixtures/button.vcd"
     ))
     .expect("vcd");
+    let scope_fixture = |name: &str| {
+        std::fs::read_to_string(format!(
+            "{}/tests/fixtures/scope/{name}",
+            env!("CARGO_MANIFEST_DIR")
+        ))
+        .expect("scope fixture")
+    };
+    let (siglent, keysight, tektronix) = (
+        scope_fixture("siglent.csv"),
+        scope_fixture("keysight.csv"),
+        scope_fixture("tektronix.csv"),
+    );
     let mut rng = Rng::seeded(0x00CA_970E);
     let (mut accepted, mut refused) = (0, 0);
     for i in 0..cases() {
@@ -391,13 +403,28 @@ fn captures_are_read_or_refused_by_line() {
             ("jsonl", JSONL_CAPTURE),
             ("csv", csv.as_str()),
             ("vcd", vcd.as_str()),
-        ][i % 3];
+            ("siglent", siglent.as_str()),
+            ("keysight", keysight.as_str()),
+            ("tektronix", tektronix.as_str()),
+        ][i % 6];
         let text = mutate(&mut rng, seed);
         let name = format!("capture.{kind}");
         let read = no_panic(kind, &text, || match kind {
             "jsonl" => read_jsonl(&name, &text, &[]).map(|(events, _)| events),
             "csv" => read_csv(&name, &text, Polarity::ActiveLow).map(|s| s.segment(&name, 0.2)),
-            _ => read_vcd(&name, &text, None, Polarity::ActiveLow).map(|s| s.segment(&name, 0.2)),
+            "vcd" => {
+                read_vcd(&name, &text, None, Polarity::ActiveLow).map(|s| s.segment(&name, 0.2))
+            }
+            // A scope's export, recognised by its header (or refused), through the default
+            // thresholds; the Keysight file's first channel.
+            _ => {
+                let channel = (kind == "keysight").then_some("1");
+                let input = bounce_table::scope::Input::Swing;
+                bounce_table::scope::load(&name, &text, None, channel, &input, Polarity::ActiveLow)
+                    .map(|(streams, _)| {
+                        streams.iter().flat_map(|s| s.segment(&name, 0.2)).collect()
+                    })
+            }
         });
         match read {
             Ok(events) => {
@@ -445,6 +472,13 @@ fn options_of_every_subcommand_parse_or_are_refused_in_one_line() {
         "--signal",
         "--active-high",
         "--skip-section",
+        "--channel",
+        "--input",
+        "--thresholds",
+        "--thresholds=1,2",
+        "--vcc",
+        "atmega328p",
+        "rigol",
         "--export",
         "--events",
         "--contact-models",
