@@ -406,3 +406,29 @@ fn bad_exports_are_refused_with_file_and_line() {
         assert!(err.contains(want), "{args:?}: {err}");
     }
 }
+
+#[test]
+fn replay_reads_an_export_and_states_what_it_read() {
+    let out = Command::new(env!("CARGO_BIN_EXE_bounce-table"))
+        .args(["replay", "--input", "atmega328p", "--vcc", "5"])
+        .arg(format!("{}/rigol.csv", dir()))
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.starts_with("## Analog capture"), "{text}");
+    assert!(text.contains("--input atmega328p at 5 V"), "{text}");
+    // The later half of each kind is replayed: 5 presses and 5 releases.
+    assert!(
+        text.contains("| rigol | press | calibrated hold-off |"),
+        "{text}"
+    );
+    assert!(
+        text.contains("| rigol | release | calibrated hold-off |"),
+        "{text}"
+    );
+}
