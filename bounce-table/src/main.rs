@@ -9,7 +9,7 @@
 use std::process::ExitCode;
 
 use bounce_table::cli::{self, Invocation};
-use bounce_table::output::{clash, identifier, render_to};
+use bounce_table::output::{identifier, render_to};
 use bounce_table::scenes::{open, Entries};
 use bounce_table::strict::printable;
 use bounce_table::{calibrate, eval, plot, replay, table, taps};
@@ -292,90 +292,34 @@ fn calibrate_main(options: &calibrate::Options) -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    let text = if options.events {
-        calibrate::events_csv(&events, options.resolution, options.burst_gap)
-    } else {
-        let groups = calibrate::group(&events, options.resolution, options.burst_gap);
-        if let Some(rust) = options.export {
-            let names: Vec<String> = groups
-                .keys()
-                .map(|(switch, kind)| format!("{switch} {}", kind.name()))
-                .collect();
-            if let Some((a, b, id)) = clash(names.iter().map(String::as_str)) {
-                eprintln!(
-                    "bounce-table calibrate: {}: '{}' and '{}' both become {id} in generated code: rename a switch",
-                    printable(&options.file),
-                    printable(&a),
-                    printable(&b)
-                );
-                return ExitCode::from(2);
-            }
-            let lang = if rust {
-                bounce_table::emit::Lang::Rust
-            } else {
-                bounce_table::emit::Lang::C
-            };
-            match calibrate::export(
-                &groups,
-                options.percentile,
-                options.min_tap,
-                lang,
-                &options.file,
-            ) {
-                Ok(text) => text,
-                Err(e) => {
-                    eprintln!(
-                        "bounce-table calibrate: {}: {}",
-                        printable(&options.file),
-                        printable(&e)
-                    );
-                    return ExitCode::from(2);
-                }
-            }
-        } else {
-            if let Some(dir) = &options.plot {
-                for ((switch, kind), d) in &groups {
-                    let name = format!(
-                        "{dir}/{}-{}.svg",
-                        identifier(switch).to_lowercase(),
-                        kind.name()
-                    );
-                    let svg = calibrate::plot(switch, *kind, d, options.percentile);
-                    if let Err(e) =
-                        std::fs::create_dir_all(dir).and_then(|()| write_atomically(&name, &svg))
-                    {
-                        eprintln!("bounce-table calibrate: {name}: {e}");
-                        return ExitCode::FAILURE;
-                    }
-                }
-            }
-            let mut report = format!(
-                "# Summary\n\n{}\n{}\n## Description\n\n{}",
-                calibrate::summary(
-                    &groups,
-                    options.percentile,
-                    options.burst_gap,
-                    options.min_tap
-                ),
-                taps::window_costs(&events, options),
-                calibrate::describe(&groups, options.resolution)
+    let loaded = calibrate::Loaded {
+        events,
+        skipped,
+        analog,
+    };
+    // The plots are files of their own; the text is what the library writes.
+    if let (Some(dir), false, None) = (&options.plot, options.events, options.export) {
+        let groups = calibrate::group(&loaded.events, options.resolution, options.burst_gap);
+        for ((switch, kind), d) in &groups {
+            let name = format!(
+                "{dir}/{}-{}.svg",
+                identifier(switch).to_lowercase(),
+                kind.name()
             );
-            if skipped.total() > 0 {
-                report.push_str(&format!("\n{}\n", skipped.describe(options.quiet)));
+            let svg = calibrate::plot(switch, *kind, d, options.percentile);
+            if let Err(e) =
+                std::fs::create_dir_all(dir).and_then(|()| write_atomically(&name, &svg))
+            {
+                eprintln!("bounce-table calibrate: {name}: {e}");
+                return ExitCode::FAILURE;
             }
-            for a in &analog {
-                report.push_str(&format!("\n{}", a.markdown()));
-            }
-            report.push_str(&calibrate::by_section(&groups));
-            report.push_str(&calibrate::assess(
-                &groups,
-                options.percentile,
-                options.seed,
-            ));
-            if options.contact_models {
-                report.push_str(&calibrate::contact::report(&groups, options.seed));
-            }
-            report
+        }
+    }
+    let text = match calibrate::written(options, &loaded) {
+        Ok(text) => text,
+        Err(e) => {
+            eprintln!("bounce-table calibrate: {}", printable(&e));
+            return ExitCode::from(2);
         }
     };
     match &options.output {

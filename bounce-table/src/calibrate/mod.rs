@@ -10,6 +10,7 @@ mod plot;
 mod predictive;
 mod report;
 mod window;
+mod written;
 
 use std::collections::BTreeMap;
 
@@ -20,13 +21,14 @@ pub use fit::{reopening_threshold, BounceModel, ImpactFit, LogNormal, MIN_FIT};
 pub use heldout::{
     random_splits, validations, RatioSpread, Validation, RANDOM_SPLITS, VALIDATION_QUANTILES,
 };
-pub use options::{load, Format, Loaded, Options};
+pub use options::{load, load_text, Format, Loaded, Options};
 pub use plot::plot;
 pub use predictive::{inverse, Part, Predictive};
 pub use report::{assess, by_section, describe, summary};
 pub use window::{
     chronological_cover, earlier_count, window, CaptureWindow, Cover, FAR_BEYOND, MIN_EVENTS,
 };
+pub use written::written;
 
 fn sorted(mut v: Vec<f64>) -> Vec<f64> {
     v.sort_by(f64::total_cmp);

@@ -108,15 +108,34 @@ pub fn load(o: &Options) -> Result<Loaded, CaptureError> {
     } else {
         vec![o.file.clone()]
     };
+    let texts = files
+        .into_iter()
+        .map(|file| {
+            let text = std::fs::read_to_string(&file).map_err(|e| unreadable(&file, e))?;
+            Ok((file, text))
+        })
+        .collect::<Result<Vec<_>, CaptureError>>()?;
+    load_text(o, &name, &texts)
+}
+
+/// [`load`] on captures already in memory: each (file name, text) of the switch `name` (a
+/// folder's files, or one file), read by `o`'s format.
+///
+/// # Errors
+/// A content that is malformed (named file and line).
+pub fn load_text(
+    o: &Options,
+    name: &str,
+    texts: &[(String, String)],
+) -> Result<Loaded, CaptureError> {
     let mut loaded = Loaded {
         events: Vec::new(),
         skipped: capture::Skipped::default(),
         analog: Vec::new(),
     };
-    for file in &files {
-        let text = std::fs::read_to_string(file).map_err(|e| unreadable(file, e))?;
-        let several = files.len() > 1;
-        let (mut events, skipped) = read_one(o, file, &text, &name, several, &mut loaded.analog)?;
+    let several = texts.len() > 1;
+    for (file, text) in texts {
+        let (mut events, skipped) = read_one(o, file, text, name, several, &mut loaded.analog)?;
         loaded.events.append(&mut events);
         loaded.skipped.add(skipped);
     }
