@@ -663,7 +663,7 @@ pub fn thresholds(
         }
         Input::Volts(low, high) => (*low, *high, "--thresholds".to_owned()),
     };
-    if !(low < high) {
+    if low.partial_cmp(&high) != Some(std::cmp::Ordering::Less) {
         return Err(error(
             file,
             0,
