@@ -7,14 +7,18 @@ input with thresholds LOW/HIGH sees, solved on the exact exponentials (not on th
 the default thresholds (30 % / 70 % of the 0-5 V swing) and the ATmega328P's at 5 V (0.3 / 0.6
 VCC), with the dips that cross one threshold only. Seeded: the files are the same every run.
 
-    python3 scripts/scope-fixtures.py   # rewrites the fixtures
+    python3 scripts/scope-fixtures.py        # rewrites the fixtures
+    python3 scripts/scope-fixtures.py DIR    # writes them in DIR instead
 """
 import json
 import math
 import os
 import random
+import sys
 
 OUT = os.path.join(os.path.dirname(__file__), "..", "bounce-table", "tests", "fixtures", "scope")
+if len(sys.argv) > 1:
+    OUT = sys.argv[1]  # elsewhere: CI regenerates them and compares
 VCC, TAU_OPEN, TAU_CLOSED = 5.0, 6e-6, 1e-7
 STEP, START, SAMPLES = 5e-7, -2e-5, 301
 NOISE = 5e-3

@@ -144,13 +144,14 @@ cargo bench --quiet -p bounce-table --bench monte_carlo -- --test > /dev/null
 step "speed/accuracy trade pipeline runs (sweep, benchmarks in test mode, peer on one scene)"
 scripts/trade-report.sh --quick
 
-step "capture fixtures regenerate identically (pyvcd, Python's csv, sigrok-cli; scripts/capture-fixtures.py)"
+step "capture fixtures regenerate identically (pyvcd, Python's csv, sigrok-cli; scripts/capture-fixtures.py; the scope exports, scripts/scope-fixtures.py)"
 if ! command -v sigrok-cli >/dev/null; then
   apt-get update -qq
   DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends sigrok-cli >/dev/null
 fi
 fixtures=$(mktemp -d)
 python3 scripts/capture-fixtures.py "$fixtures"
+python3 scripts/scope-fixtures.py "$fixtures/scope"
 # (sigrok-cli stamps its export with the day it ran)
 diff -r -I '^\$date ' "$fixtures" bounce-table/tests/fixtures
 rm -rf "$fixtures"

@@ -342,7 +342,7 @@ pub(crate) fn predict<F: Float, D: Dissipation<F>, S: OffsetSign, const FULL: bo
         // at Delta = 0, zeta 0.42, a static share of 0.16): the averaged model finishes from
         // that impulse.
         (_, Some(MapEnd::NoReturn | MapEnd::Closes(_)))
-            if !solvable && impacts.stalled.is_some() =>
+            if dissipation.has_kernel() && impacts.stalled.is_some() =>
         {
             Stop::Rest {
                 j: impacts
