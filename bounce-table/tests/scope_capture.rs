@@ -432,3 +432,36 @@ fn replay_reads_an_export_and_states_what_it_read() {
         "{text}"
     );
 }
+
+#[test]
+fn exports_appended_one_after_the_other_are_several_acquisitions() {
+    // Every layout's header starts a new acquisition wherever it comes again: two exports of
+    // the same press appended give that press twice.
+    for (name, channel) in [
+        ("siglent.csv", None),
+        ("keysight.csv", Some("1")),
+        ("tektronix.csv", None),
+        ("tektronix-mso.csv", None),
+        ("volts.csv", None),
+    ] {
+        let one = fixture(name);
+        let two = format!("{one}{one}");
+        let read = |text: &str| {
+            scope::load(
+                name,
+                text,
+                None,
+                channel,
+                &Input::Swing,
+                Polarity::ActiveLow,
+            )
+            .unwrap_or_else(|e| panic!("{e}"))
+            .0
+        };
+        let (single, double) = (read(&one), read(&two));
+        assert_eq!(single.len(), 1, "{name}");
+        assert_eq!(double.len(), 2, "{name}");
+        assert_eq!(double[0], single[0], "{name}");
+        assert_eq!(double[1], single[0], "{name}");
+    }
+}
