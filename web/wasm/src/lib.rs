@@ -1,0 +1,185 @@
+//! The desk tool's library for the page in `web/`: one entry point, [`call`], taking a command
+//! and its input as text and giving back text, the same functions the `bounce-table` command
+//! calls (no re-implementation in JavaScript). Exported to WebAssembly as `cb_alloc`,
+//! `cb_free` and `cb_call` (C ABI, memory passed by pointer and length).
+//!
+//! Commands, each a JSON object in and a JSON object out (`{"ok": ...}` or `{"error": "..."}`,
+//! the error in the command line tool's words):
+//! - `eval`: `{"line": <an eval line>, "method": "auto", "precision": "f64"}` -> the result
+//!   object `bounce-table eval` prints for it;
+//! - `calibrate` / `replay`: `{"args": [<options>], "files": [[name, text], ...]}` -> the text
+//!   the subcommand prints (the report, or `--format c|rust|csv|json`);
+//! - `trace`: `{"name": ..., "text": ..., "args": [<options>]}` -> an analog capture's
+//!   acquisitions (times and volts, at most 4,000 points each) and its thresholds.
+
+use bounce_table::{calibrate, cli, eval, replay, scope};
+use serde_json::{json, Value};
+
+/// Runs `command` on `input` (JSON): the JSON answer.
+#[must_use]
+pub fn call(command: &str, input: &str) -> String {
+    let answer = match serde_json::from_str::<Value>(input) {
+        Ok(v) => match command {
+            "eval" => eval_line(&v),
+            "calibrate" | "replay" => subcommand(command, &v).map_err(|e| json!({ "error": e })),
+            "trace" => trace(&v).map_err(|e| json!({ "error": e })),
+            _ => Err(json!({ "error": format!("unknown command {command:?}") })),
+        },
+        Err(e) => Err(json!({ "error": format!("the input is not JSON: {e}") })),
+    };
+    match answer {
+        Ok(v) => json!({ "ok": v }).to_string(),
+        Err(e) => e.to_string(),
+    }
+}
+
+fn strings(v: &Value, key: &str) -> Vec<String> {
+    v.get(key)
+        .and_then(Value::as_array)
+        .map(|a| a.iter().filter_map(|x| x.as_str().map(str::to_owned)).collect())
+        .unwrap_or_default()
+}
+
+/// An eval line's result, or its refusal: the message and the field at fault (empty for the
+/// line), as `bounce-table eval` reports them.
+fn eval_line(v: &Value) -> Result<Value, Value> {
+    let line = v.get("line").and_then(Value::as_str).unwrap_or("");
+    let mut args = vec!["eval".to_owned()];
+    for key in ["method", "precision"] {
+        if let Some(x) = v.get(key).and_then(Value::as_str) {
+            args.push(format!("--{key}={x}"));
+        }
+    }
+    let options = match cli::parse(args) {
+        Ok(cli::Invocation::Eval(o)) => o,
+        Ok(_) => return Err(json!({ "error": "not an eval" })),
+        Err(e) => return Err(json!({ "error": e.message })),
+    };
+    eval::evaluate(line, 1, &options)
+        .map_err(|(name, e)| json!({ "error": e.message, "field": e.field, "name": name }))
+}
+
+/// The capture's files: (name, text) pairs.
+fn files(v: &Value) -> Vec<(String, String)> {
+    v.get("files")
+        .and_then(Value::as_array)
+        .map(|a| {
+            a.iter()
+                .filter_map(|f| {
+                    let pair = f.as_array()?;
+                    Some((
+                        pair.first()?.as_str()?.to_owned(),
+                        pair.get(1)?.as_str()?.to_owned(),
+                    ))
+                })
+                .collect()
+        })
+        .unwrap_or_default()
+}
+
+fn subcommand(command: &str, v: &Value) -> Result<Value, String> {
+    let files = files(v);
+    let Some((first, _)) = files.first() else {
+        return Err("no capture".to_owned());
+    };
+    let mut args = vec![command.to_owned()];
+    args.extend(strings(v, "args"));
+    args.push(first.clone());
+    let invocation = cli::parse(args).map_err(|e| e.message)?;
+    let name = std::path::Path::new(first)
+        .file_stem()
+        .map_or_else(|| first.clone(), |s| s.to_string_lossy().into_owned());
+    match invocation {
+        cli::Invocation::Calibrate(o) => {
+            let loaded = calibrate::load_text(&o, &name, &files).map_err(|e| e.to_string())?;
+            calibrate::written(&o, &loaded).map(Value::String)
+        }
+        cli::Invocation::Replay(request) => {
+            let loaded =
+                calibrate::load_text(&request.capture, &name, &files).map_err(|e| e.to_string())?;
+            let lines = replay::run(&loaded.events, &request.capture, &request.settings)
+                .map_err(|e| e.to_string())?;
+            let mut text = String::new();
+            for a in &loaded.analog {
+                text.push_str(&a.markdown());
+                text.push('\n');
+            }
+            text.push_str(&replay::markdown(&lines));
+            Ok(Value::String(text))
+        }
+        _ => Err(format!("not {command}")),
+    }
+}
+
+fn trace(v: &Value) -> Result<Value, String> {
+    let name = v.get("name").and_then(Value::as_str).unwrap_or("capture.csv");
+    let text = v.get("text").and_then(Value::as_str).unwrap_or("");
+    let mut args = vec!["calibrate".to_owned()];
+    args.extend(strings(v, "args"));
+    args.push(name.to_owned());
+    let o = match cli::parse(args).map_err(|e| e.message)? {
+        cli::Invocation::Calibrate(o) => o,
+        _ => return Err("not calibrate".to_owned()),
+    };
+    let vendor = match o.format {
+        calibrate::Format::Scope(v) => v,
+        _ => return Err("not an analog capture".to_owned()),
+    };
+    let traces =
+        scope::read(name, text, vendor, o.channel.as_deref()).map_err(|e| e.to_string())?;
+    let swing = scope::swing(name, &traces).map_err(|e| e.to_string())?;
+    let (low, high, how) = scope::thresholds(name, &o.input, &swing).map_err(|e| e.to_string())?;
+    let acquisitions: Vec<Value> = traces
+        .iter()
+        .map(|t| {
+            let step = (t.times.len() / 4000).max(1);
+            let pick = |xs: &[f64]| xs.iter().step_by(step).copied().collect::<Vec<f64>>();
+            json!({ "channel": t.channel, "t": pick(&t.times), "v": pick(&t.volts) })
+        })
+        .collect();
+    Ok(json!({ "acquisitions": acquisitions, "low": low, "high": high, "how": how }))
+}
+
+/// Reserves `len` bytes in the module's memory for the page to write into.
+#[no_mangle]
+pub extern "C" fn cb_alloc(len: usize) -> *mut u8 {
+    let mut buffer = Vec::<u8>::with_capacity(len.max(1));
+    let pointer = buffer.as_mut_ptr();
+    std::mem::forget(buffer);
+    pointer
+}
+
+/// Gives back what [`cb_alloc`] or [`cb_call`] reserved (`len`: the length reserved).
+///
+/// # Safety
+/// `pointer` and `len` are what one of them gave, once.
+#[no_mangle]
+pub unsafe extern "C" fn cb_free(pointer: *mut u8, len: usize) {
+    drop(Vec::from_raw_parts(pointer, 0, len.max(1)));
+}
+
+/// Runs a command: its name and input are UTF-8 at the pointers given. Returns a pointer to
+/// 8 bytes (the answer's address and length, little-endian u32 each) followed by nothing
+/// else; free the answer and then those 8 bytes with [`cb_free`].
+///
+/// # Safety
+/// The pointers and lengths describe memory [`cb_alloc`] gave and the page wrote.
+#[no_mangle]
+pub unsafe extern "C" fn cb_call(
+    command: *const u8,
+    command_len: usize,
+    input: *const u8,
+    input_len: usize,
+) -> *mut u8 {
+    let command = String::from_utf8_lossy(std::slice::from_raw_parts(command, command_len));
+    let input = String::from_utf8_lossy(std::slice::from_raw_parts(input, input_len));
+    let answer = call(&command, &input).into_bytes();
+    let (pointer, len) = (answer.as_ptr() as usize, answer.len());
+    std::mem::forget(answer.into_boxed_slice());
+    let mut header = Vec::with_capacity(8);
+    header.extend_from_slice(&(pointer as u32).to_le_bytes());
+    header.extend_from_slice(&(len as u32).to_le_bytes());
+    let out = header.as_mut_ptr();
+    std::mem::forget(header);
+    out
+}
