@@ -23,6 +23,7 @@ pub fn call(command: &str, input: &str) -> String {
             "eval" => eval_line(&v),
             "calibrate" | "replay" => subcommand(command, &v).map_err(|e| json!({ "error": e })),
             "trace" => trace(&v).map_err(|e| json!({ "error": e })),
+            "catalogue" => Ok(catalogue()),
             _ => Err(json!({ "error": format!("unknown command {command:?}") })),
         },
         Err(e) => Err(json!({ "error": format!("the input is not JSON: {e}") })),
@@ -31,6 +32,16 @@ pub fn call(command: &str, input: &str) -> String {
         Ok(v) => json!({ "ok": v }).to_string(),
         Err(e) => e.to_string(),
     }
+}
+
+/// The catalogue's switches as eval lines (`bounce-table/scenes/catalogue.jsonl`).
+fn catalogue() -> Value {
+    let lines: Vec<Value> = include_str!("../../../bounce-table/scenes/catalogue.jsonl")
+        .lines()
+        .filter(|l| !l.trim().is_empty())
+        .map(|l| Value::String(l.to_owned()))
+        .collect();
+    Value::Array(lines)
 }
 
 fn strings(v: &Value, key: &str) -> Vec<String> {
