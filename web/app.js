@@ -46,25 +46,79 @@ function evaluate() {
   }
 }
 
+// Round steps for an axis: 1, 2 or 5 times a power of ten, about `n` of them.
+function ticks(lo, hi, n) {
+  const raw = (hi - lo) / n, p = Math.pow(10, Math.floor(Math.log10(raw)));
+  const step = [1, 2, 5, 10].map((m) => m * p).find((s) => s >= raw);
+  const out = [];
+  for (let v = Math.ceil(lo / step) * step; v <= hi + step * 1e-9; v += step) out.push(v);
+  return out;
+}
+
+// One acquisition: volts against microseconds, the two thresholds dashed, each level change a
+// tick on the time axis, and the window calibrate recommends for its kind shaded from the
+// first change. Drag across the plot to zoom in on a span, double-click to zoom out.
 function plot(trace) {
   const div = document.getElementById('plot');
   div.innerHTML = '';
-  const w = 900, h = 220, pad = 40;
+  const w = 900, h = 240, left = 60, right = 70, top = 24, bottom = 40;
   for (const [k, a] of trace.acquisitions.slice(0, 6).entries()) {
-    const t0 = a.t[0], t1 = a.t[a.t.length - 1];
-    const vmin = Math.min(...a.v, trace.low), vmax = Math.max(...a.v, trace.high);
-    const x = (t) => pad + (w - 2 * pad) * (t - t0) / (t1 - t0);
-    const y = (v) => h - pad - (h - 2 * pad) * (v - vmin) / (vmax - vmin);
-    let d = '';
-    a.t.forEach((t, i) => { d += (i ? 'L' : 'M') + x(t).toFixed(1) + ',' + y(a.v[i]).toFixed(1); });
-    const svg = `<svg width="${w}" height="${h}" xmlns="http://www.w3.org/2000/svg">
-      <text x="${pad}" y="14">acquisition ${k + 1}, ${a.channel}: ${seconds(t0)} to ${seconds(t1)}</text>
-      <line x1="${pad}" x2="${w - pad}" y1="${y(trace.low)}" y2="${y(trace.low)}" stroke="#07c" stroke-dasharray="4"/>
-      <line x1="${pad}" x2="${w - pad}" y1="${y(trace.high)}" y2="${y(trace.high)}" stroke="#c70" stroke-dasharray="4"/>
-      <text x="${w - pad + 2}" y="${y(trace.low)}" font-size="11">${trace.low.toFixed(2)} V</text>
-      <text x="${w - pad + 2}" y="${y(trace.high)}" font-size="11">${trace.high.toFixed(2)} V</text>
-      <path d="${d}" fill="none" stroke="#222"/></svg>`;
-    div.insertAdjacentHTML('beforeend', svg);
+    const box = document.createElement('div');
+    div.appendChild(box);
+    const draw = (t0, t1) => {
+      const vmin = Math.min(...a.v, trace.low), vmax = Math.max(...a.v, trace.high);
+      const x = (t) => left + (w - left - right) * (t - t0) / (t1 - t0);
+      const y = (v) => h - bottom - (h - top - bottom) * (v - vmin) / (vmax - vmin);
+      let d = '';
+      a.t.forEach((t, i) => {
+        if (t >= t0 && t <= t1) d += (d ? 'L' : 'M') + x(t).toFixed(1) + ',' + y(a.v[i]).toFixed(1);
+      });
+      let axes = `<line x1="${left}" x2="${w - right}" y1="${h - bottom}" y2="${h - bottom}" stroke="#000"/>
+        <line x1="${left}" x2="${left}" y1="${top}" y2="${h - bottom}" stroke="#000"/>
+        <text x="${(w - right + left) / 2}" y="${h - 6}" text-anchor="middle" font-size="12">time (us)</text>
+        <text x="14" y="${(h - bottom + top) / 2}" font-size="12" transform="rotate(-90 14 ${(h - bottom + top) / 2})" text-anchor="middle">volts (V)</text>`;
+      for (const t of ticks(t0 * 1e6, t1 * 1e6, 8)) {
+        const px = x(t / 1e6);
+        axes += `<line x1="${px}" x2="${px}" y1="${h - bottom}" y2="${h - bottom + 4}" stroke="#000"/>
+          <text x="${px}" y="${h - bottom + 16}" font-size="11" text-anchor="middle">${+t.toPrecision(6)}</text>`;
+      }
+      for (const v of ticks(vmin, vmax, 4)) {
+        axes += `<line x1="${left - 4}" x2="${left}" y1="${y(v)}" y2="${y(v)}" stroke="#000"/>
+          <text x="${left - 6}" y="${y(v) + 4}" font-size="11" text-anchor="end">${+v.toPrecision(4)}</text>`;
+      }
+      let marks = '';
+      const window = trace.windows[a.kind];
+      if (a.changes.length && window !== undefined) {
+        const from = a.changes[0], to = Math.min(from + window, t1);
+        if (to > t0 && from < t1) {
+          const x0 = x(Math.max(from, t0)), x1 = x(to);
+          marks += `<rect x="${x0}" y="${top}" width="${Math.max(x1 - x0, 1)}" height="${h - top - bottom}" fill="#2a2" fill-opacity="0.12"/>
+            <text x="${x0 + 4}" y="${top + 12}" font-size="11" fill="#161">${a.kind} window ${seconds(window)}</text>`;
+        }
+      }
+      for (const c of a.changes) {
+        if (c >= t0 && c <= t1) marks += `<line x1="${x(c)}" x2="${x(c)}" y1="${h - bottom - 6}" y2="${h - bottom}" stroke="#c00"/>`;
+      }
+      box.innerHTML = `<svg width="${w}" height="${h}" xmlns="http://www.w3.org/2000/svg" style="user-select:none">
+        <text x="${left}" y="14" font-size="12">acquisition ${k + 1} (${a.kind}), ${a.channel}: ${a.changes.length} level changes</text>
+        ${marks}${axes}
+        <line x1="${left}" x2="${w - right}" y1="${y(trace.low)}" y2="${y(trace.low)}" stroke="#07c" stroke-dasharray="4"/>
+        <line x1="${left}" x2="${w - right}" y1="${y(trace.high)}" y2="${y(trace.high)}" stroke="#c70" stroke-dasharray="4"/>
+        <text x="${w - right + 4}" y="${y(trace.low) + 4}" font-size="11">low ${trace.low.toFixed(2)} V</text>
+        <text x="${w - right + 4}" y="${y(trace.high) + 4}" font-size="11">high ${trace.high.toFixed(2)} V</text>
+        <path d="${d}" fill="none" stroke="#222"/></svg>`;
+      const svg = box.firstChild;
+      const toTime = (e) => t0 + (t1 - t0) * (e.offsetX - left) / (w - left - right);
+      let start = null;
+      svg.onmousedown = (e) => { start = toTime(e); };
+      svg.onmouseup = (e) => {
+        const end = toTime(e);
+        if (start !== null && Math.abs(end - start) > (t1 - t0) / 200) draw(Math.min(start, end), Math.max(start, end));
+        start = null;
+      };
+      svg.ondblclick = () => draw(a.t[0], a.t[a.t.length - 1]);
+    };
+    draw(a.t[0], a.t[a.t.length - 1]);
   }
 }
 

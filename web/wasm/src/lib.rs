@@ -140,15 +140,48 @@ fn trace(v: &Value) -> Result<Value, String> {
         scope::read(name, text, vendor, o.channel.as_deref()).map_err(|e| e.to_string())?;
     let swing = scope::swing(name, &traces).map_err(|e| e.to_string())?;
     let (low, high, how) = scope::thresholds(name, &o.input, &swing).map_err(|e| e.to_string())?;
+    // The windows calibrate recommends, per kind (none below its minimum of events).
+    let stem = std::path::Path::new(name)
+        .file_stem()
+        .map_or_else(|| name.to_owned(), |s| s.to_string_lossy().into_owned());
+    let loaded = calibrate::load_text(&o, &stem, &[(name.to_owned(), text.to_owned())])
+        .map_err(|e| e.to_string())?;
+    let groups = calibrate::group(&loaded.events, o.resolution, o.burst_gap);
+    let mut windows = serde_json::Map::new();
+    for ((_, kind), d) in &groups {
+        let refs: Vec<&bounce_table::capture::Description> = d.iter().collect();
+        let w = calibrate::window(&refs, o.percentile);
+        if !w.too_few() {
+            windows.insert(kind.name().to_owned(), json!(w.recommended()));
+        }
+    }
     let acquisitions: Vec<Value> = traces
         .iter()
         .map(|t| {
+            let levels = scope::to_levels(t, low, high, &swing, o.polarity);
             let step = (t.times.len() / 4000).max(1);
             let pick = |xs: &[f64]| xs.iter().step_by(step).copied().collect::<Vec<f64>>();
-            json!({ "channel": t.channel, "t": pick(&t.times), "v": pick(&t.volts) })
+            let kind = if levels.stream.closed_before {
+                "release"
+            } else {
+                "press"
+            };
+            json!({
+                "channel": t.channel,
+                "t": pick(&t.times),
+                "v": pick(&t.volts),
+                "changes": levels.stream.changes,
+                "kind": kind,
+            })
         })
         .collect();
-    Ok(json!({ "acquisitions": acquisitions, "low": low, "high": high, "how": how }))
+    Ok(json!({
+        "acquisitions": acquisitions,
+        "low": low,
+        "high": high,
+        "how": how,
+        "windows": windows,
+    }))
 }
 
 /// Reserves `len` bytes in the module's memory for the page to write into.
