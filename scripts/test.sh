@@ -156,6 +156,18 @@ python3 scripts/scope-fixtures.py "$fixtures/scope"
 diff -r -I '^\$date ' "$fixtures" bounce-table/tests/fixtures
 rm -rf "$fixtures"
 
+step "the page in web/ builds (scripts/web.sh) and works in headless Chromium (web/tests/browser.py; Debian's chromium and chromium-driver, selenium from PyPI)"
+if ! command -v chromium >/dev/null || ! command -v chromedriver >/dev/null; then
+  apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends chromium chromium-driver >/dev/null
+fi
+if ! python3 -c "import selenium" 2>/dev/null; then
+  pip install -q selenium 2>/dev/null || pip install -q --break-system-packages selenium
+fi
+scripts/web.sh
+cargo build --quiet --release -p bounce-table
+python3 web/tests/browser.py
+
 step "the repository stands alone: every citation points inside it"
 python3 scripts/doc-links.py
 

@@ -47,7 +47,11 @@ fn catalogue() -> Value {
 fn strings(v: &Value, key: &str) -> Vec<String> {
     v.get(key)
         .and_then(Value::as_array)
-        .map(|a| a.iter().filter_map(|x| x.as_str().map(str::to_owned)).collect())
+        .map(|a| {
+            a.iter()
+                .filter_map(|x| x.as_str().map(str::to_owned))
+                .collect()
+        })
         .unwrap_or_default()
 }
 
@@ -123,7 +127,10 @@ fn subcommand(command: &str, v: &Value) -> Result<Value, String> {
 }
 
 fn trace(v: &Value) -> Result<Value, String> {
-    let name = v.get("name").and_then(Value::as_str).unwrap_or("capture.csv");
+    let name = v
+        .get("name")
+        .and_then(Value::as_str)
+        .unwrap_or("capture.csv");
     let text = v.get("text").and_then(Value::as_str).unwrap_or("");
     let mut args = vec!["calibrate".to_owned()];
     args.extend(strings(v, "args"));
