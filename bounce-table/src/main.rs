@@ -193,13 +193,12 @@ fn replay_main(request: &replay::Request) -> ExitCode {
         replay::Output::Json => out!("{}", replay::json(&lines)),
         replay::Output::Curve => {}
         replay::Output::Markdown => {
-            for a in &analog {
-                outln!("{}", a.markdown());
-            }
-            if skipped.total() > 0 {
-                outln!("{}\n", skipped.describe(request.capture.quiet));
-            }
-            out!("{}", replay::markdown(&lines));
+            let loaded = calibrate::Loaded {
+                events,
+                skipped,
+                analog,
+            };
+            out!("{}", replay::report(&loaded, request.capture.quiet, &lines));
         }
     }
     ExitCode::SUCCESS

@@ -996,6 +996,23 @@ pub fn json(lines: &[Line]) -> String {
         .collect()
 }
 
+/// `replay`'s Markdown as the desk tool prints it: each analog capture's section, what was left
+/// out of the capture (if anything), then the table of [`markdown`].
+#[must_use]
+pub fn report(loaded: &crate::calibrate::Loaded, quiet: f64, lines: &[Line]) -> String {
+    let mut text = String::new();
+    for a in &loaded.analog {
+        text.push_str(&a.markdown());
+        text.push('\n');
+    }
+    if loaded.skipped.total() > 0 {
+        text.push_str(&loaded.skipped.describe(quiet));
+        text.push_str("\n\n");
+    }
+    text.push_str(&markdown(lines));
+    text
+}
+
 /// The rows as a markdown table (the table format is the same).
 #[must_use]
 pub fn markdown(lines: &[Line]) -> String {

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The page in a real browser (headless Chromium from Debian's packages, driven by selenium):
 it loads from file:// with no console error; the tactile dome gives `bounce-table eval`'s
-bounce; a Rigol trace gives the CLI's calibrate text; bad input shows its message at the field.
+bounce; a Rigol trace, and the shared capture where it is present, give the CLI's calibrate
+(and replay) text; bad input shows its message at the field.
 Screenshots go to the directory given (docs/png).
 
     python3 web/tests/browser.py docs/png
@@ -64,9 +65,18 @@ def main():
         assert len(driver.find_elements(By.CSS_SELECTOR, "#plot svg")) == 6
         if SHOTS:
             driver.save_screenshot(os.path.join(SHOTS, "web-capture.png"))
+        # The shared capture (where it is present): calibrate's and replay's text, as the CLI's.
+        shared = os.path.join(ROOT, "..", "shared", "data", "bouncy-button-uno.jsonl")
+        if os.path.exists(shared):
+            driver.execute_script("document.getElementById('calibrate').textContent = ''")
+            driver.find_element(By.ID, "file").send_keys(os.path.abspath(shared))
+            WebDriverWait(driver, 300).until(lambda d: d.find_element(By.ID, "calibrate").text != "")
+            for command in ("calibrate", "replay"):
+                page = driver.find_element(By.ID, command).get_attribute("textContent")
+                assert page.strip() == cli(command, shared).strip(), f"{command} differs on the shared capture"
         errors = [e for e in driver.get_log("browser") if e["level"] == "SEVERE"]
         assert not errors, errors
-        print("web: the page loads with no console error, gives eval's bounce for the dome, the CLI's calibrate text for a Rigol trace, and the field's message for bad input")
+        print("web: the page loads with no console error, gives eval's bounce for the dome, the CLI's calibrate text for a Rigol trace (and calibrate's and replay's for the shared capture where present), and the field's message for bad input")
     finally:
         driver.quit()
 

@@ -114,13 +114,11 @@ fn subcommand(command: &str, v: &Value) -> Result<Value, String> {
                 calibrate::load_text(&request.capture, &name, &files).map_err(|e| e.to_string())?;
             let lines = replay::run(&loaded.events, &request.capture, &request.settings)
                 .map_err(|e| e.to_string())?;
-            let mut text = String::new();
-            for a in &loaded.analog {
-                text.push_str(&a.markdown());
-                text.push('\n');
-            }
-            text.push_str(&replay::markdown(&lines));
-            Ok(Value::String(text))
+            Ok(Value::String(replay::report(
+                &loaded,
+                request.capture.quiet,
+                &lines,
+            )))
         }
         _ => Err(format!("not {command}")),
     }
