@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Every test and check that CI runs, on a fresh machine: installs what it needs (rustup targets
-# and components, mpmath for the table generators, scipy for the trade report's peer), then runs
+# and components, mpmath for the table generators, scipy for the trade report's peer, Chromium
+# and selenium for the page's browser test), then runs
 # the host tests and doctests, clippy and rustdoc with -D warnings, the no_std builds for every
 # Cortex-M target and feature set, the firmware (QEMU, simavr), the size, cost and trade reports,
 # and checks that the committed generated and measured tables are current.
@@ -161,9 +162,7 @@ if ! command -v chromium >/dev/null || ! command -v chromedriver >/dev/null; the
   apt-get update -qq
   DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends chromium chromium-driver >/dev/null
 fi
-if ! python3 -c "import selenium" 2>/dev/null; then
-  pip install -q selenium 2>/dev/null || pip install -q --break-system-packages selenium
-fi
+python3 -c "import selenium" 2>/dev/null || pip_install selenium
 scripts/web.sh
 cargo build --quiet --release -p bounce-table
 python3 web/tests/browser.py
