@@ -839,7 +839,7 @@ impl Report {
             |s: Option<f64>| s.map_or_else(|| "-".to_owned(), |s| format!("{:.3} us", s * 1e6));
         let mut out = format!(
             "## Analog capture\n\n{} export, channel {}: {} acquisitions, {} samples {:.3} us apart. \
-             Levels {:.3} V and {:.3} V (2nd and 98th percentiles), noise {:.1} mV RMS about them; \
+             Levels {:.3} V and {:.3} V (2nd and 98th percentiles), noise {:.1} mV (one standard deviation); \
              rise time (10-90 %) {}, fall time {} (medians of the clean edges). \
              Thresholds {:.3} V and {:.3} V: {}. {} level changes.\n",
             self.vendor.name(),
