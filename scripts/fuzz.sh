@@ -150,7 +150,8 @@ The draws here did not reach them, for reasons of the distribution, not of the c
   prediction's, bit for bit, or the same error.
 - **scene-files**, **eval-lines**, **captures**, **options**: the desk tool's parsers, each input
   a valid seed (the example scene file, the catalogue as JSON Lines and as JSON, capture
-  fixtures in JSON Lines, CSV and VCD, option lists of every subcommand) mutated one to three
+  fixtures in JSON Lines, CSV and VCD and scope exports of Siglent, Keysight and Tektronix,
+  option lists of every subcommand) mutated one to three
   times: bytes flipped, edge literals inserted (\`nan\`, \`1e-400\`, \`1e400\`, duplicate keys,
   wide VCD signals...), ranges cut, lines repeated or swapped, text truncated. A refusal must
   name its file and line or entry in one line; an accepted scene must analyse to a finite
