@@ -1668,3 +1668,48 @@ fn the_map_hands_a_kernels_stalled_flight_to_the_averaged_model() {
         );
     }
 }
+
+#[test]
+fn a_kernels_force_carries_its_modes_rounding_in_f32() {
+    // Found by the widened harness's long run (FUZZ_SEED=20261205, f32 against f64):
+    // overdamped (zeta 1.9) with a kernel of static share 0.45, where p = Delta - c1 keeps 1 %
+    // of Delta and the kernel's force after the first flight was 48 epsilons off: the f32
+    // bounce 1.03e-5 from f64's where 1.01e-5 was stated. The force's figure now carries the
+    // modes' own rounding.
+    let x = <f32 as Float>::from_f64;
+    let contact = Contact {
+        frequency: Frequency::Omega(x(1.034_673_947_656_140_6e8)),
+        offset: Offset::Delta(x(-1.332_681_397_064_05e-9)),
+        restitution: Restitution::Coefficient(x(0.302_936_957_376_05)),
+        closing_speed: x(3.950_819_506_612_551_6e-4),
+        threshold: Threshold::FractionOfFirst(x(0.002_116_295_7)),
+    };
+    let (zeta, kernel) = (
+        1.869_784_332_186_547_5,
+        (4.912_922_778_904_373e24, 1.837_420_786_488_032e-9),
+    );
+    let scene = Scene::new(
+        contact,
+        (
+            Viscous::optional(x(zeta)).unwrap_or_else(|_| unreachable!()),
+            Hereditary::exponential(x(kernel.0), x(kernel.1)).unwrap_or_else(|_| unreachable!()),
+        ),
+    )
+    .unwrap_or_else(|_| unreachable!());
+    let method = methods::<f32>()[TRUTH];
+    let narrow = scene.predict(method);
+    let wide = wide_prediction(&contact, zeta, Some(kernel), methods::<f64>()[TRUTH])
+        .unwrap_or_else(|| unreachable!());
+    let (Some(t), Some(e), Some(u), Some(f)) = (
+        narrow.bounce_time(),
+        narrow.expected_error,
+        wide.bounce_time(),
+        wide.expected_error,
+    ) else {
+        panic!("{narrow:?} {wide:?}");
+    };
+    assert!(
+        agree(f64::from(t), f64::from(e), u, f),
+        "f32 {t} (error {e}) against f64 {u} (error {f})"
+    );
+}
