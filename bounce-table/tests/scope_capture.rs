@@ -19,6 +19,17 @@ fn fixture(name: &str) -> String {
     std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"))
 }
 
+/// Reads an export through `input`, recognised by its header, the contact closed when low.
+fn read(
+    name: &str,
+    text: &str,
+    channel: Option<&str>,
+    input: &Input,
+) -> Result<(Vec<bounce_table::capture::Stream>, scope::Report), bounce_table::capture::CaptureError>
+{
+    scope::load(name, text, None, channel, input, Polarity::ActiveLow)
+}
+
 fn expected() -> Value {
     serde_json::from_str(&fixture("expected.json")).unwrap()
 }
@@ -55,15 +66,8 @@ fn check(name: &str, vendor: Vendor, channel: Option<&str>, expected: &[Value]) 
     let text = fixture(name);
     assert_eq!(scope::recognise(&text), Some(vendor), "{name}");
     for which in ["swing", "atmega328p"] {
-        let (streams, report) = scope::load(
-            name,
-            &text,
-            None,
-            channel,
-            &input(which),
-            Polarity::ActiveLow,
-        )
-        .unwrap_or_else(|e| panic!("{e}"));
+        let (streams, report) =
+            read(name, &text, channel, &input(which)).unwrap_or_else(|e| panic!("{e}"));
         assert_eq!(report.vendor, vendor);
         assert_eq!(streams.len(), expected.len(), "{name}: acquisitions");
         let mut marginal = vec![0; expected.len()];
@@ -116,15 +120,7 @@ fn every_vendors_export_gives_the_changes_of_the_exact_waveform() {
 
 #[test]
 fn the_report_states_swing_noise_and_the_rcs_rise() {
-    let (_, r) = scope::load(
-        "rigol.csv",
-        &fixture("rigol.csv"),
-        None,
-        None,
-        &Input::Swing,
-        Polarity::ActiveLow,
-    )
-    .unwrap();
+    let (_, r) = read("rigol.csv", &fixture("rigol.csv"), None, &Input::Swing).unwrap();
     assert_eq!((r.acquisitions, r.samples), (20, 20 * 301));
     assert!((r.step - 5e-7).abs() < 1e-12, "{}", r.step);
     // The rails 0 and 5 V with 5 mV of noise; the percentiles sit within a few sigma.
@@ -154,8 +150,7 @@ fn an_mcu_preset_and_thresholds_change_what_a_marginal_dip_is() {
     // marginal. --thresholds 1.5,3.0 is the same; 1.0,2.0 makes both bounces.
     let text = fixture("volts.csv");
     let run = |input: Input| {
-        let (s, r) =
-            scope::load("volts.csv", &text, None, None, &input, Polarity::ActiveLow).unwrap();
+        let (s, r) = read("volts.csv", &text, None, &input).unwrap();
         (s[0].changes.len(), r.marginal.len())
     };
     assert_eq!(run(Input::Swing), (5, 2));
@@ -211,15 +206,7 @@ fn calibrate_on_a_rigol_export_gives_the_windows_of_its_transitions_as_levels() 
     // stream (each acquisition a second after the last, the level carried across): the same
     // events, so the same windows, byte for byte.
     let rigol = format!("{}/rigol.csv", dir());
-    let (streams, _) = scope::load(
-        "rigol.csv",
-        &fixture("rigol.csv"),
-        None,
-        None,
-        &Input::Swing,
-        Polarity::ActiveLow,
-    )
-    .unwrap();
+    let (streams, _) = read("rigol.csv", &fixture("rigol.csv"), None, &Input::Swing).unwrap();
     let mut rows = vec![format!(
         "0,{}",
         if streams[0].closed_before { 0 } else { 1 }
@@ -294,16 +281,7 @@ fn thresholds_inside_the_noise_chatter_and_hysteresis_does_not() {
     // the default, 2 V apart, give the changes of the exact waveform.
     let text = fixture("siglent.csv");
     let count = |input: Input| {
-        scope::load(
-            "siglent.csv",
-            &text,
-            None,
-            None,
-            &input,
-            Polarity::ActiveLow,
-        )
-        .unwrap()
-        .0[0]
+        read("siglent.csv", &text, None, &input).unwrap().0[0]
             .changes
             .len()
     };
@@ -379,13 +357,11 @@ fn bad_exports_are_refused_with_file_and_line() {
         assert!(e.to_string().starts_with(want), "{e} (wanted {want})");
     }
     // Thresholds the trace never reaches.
-    let e = scope::load(
+    let e = read(
         "volts.csv",
         &fixture("volts.csv"),
         None,
-        None,
         &Input::Volts(6.0, 7.0),
-        Polarity::ActiveLow,
     )
     .unwrap_err();
     assert!(e.to_string().contains("the input never changes"), "{e}");
@@ -447,16 +423,9 @@ fn exports_appended_one_after_the_other_are_several_acquisitions() {
         let one = fixture(name);
         let two = format!("{one}{one}");
         let read = |text: &str| {
-            scope::load(
-                name,
-                text,
-                None,
-                channel,
-                &Input::Swing,
-                Polarity::ActiveLow,
-            )
-            .unwrap_or_else(|e| panic!("{e}"))
-            .0
+            read(name, text, channel, &Input::Swing)
+                .unwrap_or_else(|e| panic!("{e}"))
+                .0
         };
         let (single, double) = (read(&one), read(&two));
         assert_eq!(single.len(), 1, "{name}");

@@ -217,39 +217,19 @@ fn the_f32_exact_tier_keeps_its_figure_on_stiff_kernels() {
     );
     // The gap of 1.3e-15 m under a 1e4 m swing: neither float resolves whether the second
     // flight returns (x rounds to 1e-12 m in f64), and both now say so with no figure.
-    for f32_scene in [true, false] {
-        let c = |f32_scene| {
-            if f32_scene {
-                exact::<f32>(
-                    contact(
-                        24.024_207,
-                        1.293_507_8e-15,
-                        0.807_140_2,
-                        3.919_127e5,
-                        Threshold::None,
-                    ),
-                    1.430_934_8e-10,
-                    Some((1_772.916_1, 0.274_995)),
-                )
-            } else {
-                exact::<f64>(
-                    contact(
-                        24.024_207,
-                        1.293_507_8e-15,
-                        0.807_140_2,
-                        3.919_127e5,
-                        Threshold::None,
-                    ),
-                    1.430_934_8e-10,
-                    Some((1_772.916_1, 0.274_995)),
-                )
-            }
-        };
-        let (t, figure) = c(f32_scene).unwrap_or_else(|| panic!("a time"));
-        assert!(
-            t > 0.0 && figure.is_none(),
-            "f32 {f32_scene}: {t} {figure:?}"
+    fn creeping<F: Float>() -> Option<(f64, Option<f64>)> {
+        let c = contact::<F>(
+            24.024_207,
+            1.293_507_8e-15,
+            0.807_140_2,
+            3.919_127e5,
+            Threshold::None,
         );
+        exact::<F>(c, 1.430_934_8e-10, Some((1_772.916_1, 0.274_995)))
+    }
+    for (float, answer) in [("f32", creeping::<f32>()), ("f64", creeping::<f64>())] {
+        let (t, figure) = answer.unwrap_or_else(|| panic!("{float}: a time"));
+        assert!(t > 0.0 && figure.is_none(), "{float}: {t} {figure:?}");
     }
     // Its family: kernel strengths over many decades against the oscillator (the static
     // share kappa tau / Omega^2 from 1e-6 to 0.9), memories Omega tau from 0.01 to 100.
