@@ -20,7 +20,11 @@
 //! **Returns.** A flight is scanned in steps of 1/16 of the pair's period: a return is bracketed
 //! where x - Delta turns non-negative, or at a maximum (x' falling through 0) that reaches the
 //! stop, and solved by Newton steps kept inside the bracket. A gap's flight ends without return
-//! once max(c1, 0) e^(r1 t) + e^(alpha t) hypot(p, q), a bound on x from then on, is below Delta.
+//! once max(c1, 0) e^(r1 t) + e^(alpha t) hypot(p, q), a bound on x from then on, is below Delta
+//! with the modes' rounding added (a bound within rounding of the stop decides nothing: the scan
+//! goes on). A maximum within rounding of the stop is a graze: the flight is taken to return or
+//! stay as the float says, with no figure, and a last flight that stays ends the bounce at the
+//! latest such maximum, not at its departure.
 //! All of it spends at most [`KERNEL_FLIGHT_STEPS`] evaluations per flight; beyond, the return is
 //! undecided and the prediction gives no expected error.
 //!
@@ -317,9 +321,13 @@ impl<F: Float> Kernel<F> {
         y.abs() <= c::<F>(GRAZING_EPSILONS) * F::EPSILON * (self.delta.abs() + modes)
     }
 
-    /// A bound on x from `t` on (every mode decays).
+    /// A bound on x from `t` on (every mode decays; a slow mode below zero only rises towards
+    /// it), the modes' coefficients' rounding and its own included: a bound below the stop is
+    /// below it for every float near the computed modes.
     fn ceiling(&self, m: &Modes<F>, t: F) -> F {
-        m.c1.max(F::ZERO) * (self.real * t).exp() + (self.alpha * t).exp() * m.p.hypot(m.q)
+        let bound = (m.c1 + m.c1_error).max(F::ZERO) * (self.real * t).exp()
+            + (self.alpha * t).exp() * (m.p.hypot(m.q) + m.pq_error);
+        bound * (F::ONE + c::<F>(GRAZING_EPSILONS) * F::EPSILON)
     }
 }
 
@@ -328,12 +336,15 @@ impl<F: Float> Flights<F> for Kernel<F> {
     fn land(&mut self, a: F) -> Landing<F> {
         let m = self.modes(a);
         let mut spent = 0;
-        let mut grazing = false;
+        let (mut grazing, mut touch) = (false, F::ZERO);
         // Scan for a bracket [low, high] of the return.
         let (mut low, mut rising) = (F::ZERO, false);
         let bracket = loop {
             if spent >= KERNEL_FLIGHT_STEPS {
-                return Landing::Stays { grazing: true };
+                return Landing::Stays {
+                    grazing: true,
+                    touch: F::ZERO,
+                };
             }
             spent += 1;
             let t = low + self.step;
@@ -357,18 +368,21 @@ impl<F: Float> Flights<F> for Kernel<F> {
                     }
                 }
                 let top = self.eval(&m, a, up).0;
-                grazing |= self.grazes(&m, up, top);
+                if self.grazes(&m, up, top) {
+                    grazing = true;
+                    touch = up;
+                }
                 if top >= F::ZERO {
                     break (low, up);
                 }
             }
-            let ceiling = self.ceiling(&m, t);
-            if self.delta > F::ZERO && ceiling < self.delta {
-                // A bound within rounding of the stop decides nothing: the swing may reach it
-                // (f32, a gap of 2e-10 m whose bound fell 1.4e-17 m short: 3 impacts where f64
-                // solves 4).
-                let grazing = grazing || self.grazes(&m, t, ceiling - self.delta);
-                return Landing::Stays { grazing };
+            // (The bound carries its rounding: one within rounding of the stop decided a stay
+            // the swing could still reach, f32 at a gap of 2e-10 m whose bound fell 1.4e-17 m
+            // short, 3 impacts where f64 solves 4. Taken as a graze instead, it turned the
+            // creeping approach of a slow mode far below the stop, its bound loose by the
+            // mode, into no end that the float could find: 0 s where f64 stays at once.)
+            if self.delta > F::ZERO && self.ceiling(&m, t) < self.delta {
+                return Landing::Stays { grazing, touch };
             }
             rising = v > F::ZERO;
             low = t;
@@ -435,7 +449,10 @@ impl<F: Float> Flights<F> for Kernel<F> {
                 grazing,
             }
         } else {
-            Landing::Stays { grazing: true }
+            Landing::Stays {
+                grazing: true,
+                touch: t,
+            }
         }
     }
 
