@@ -215,11 +215,12 @@ fn the_f32_exact_tier_keeps_its_figure_on_stiff_kernels() {
         ),
         Some(true)
     );
-    // The gap of 1.3e-15 m under a 1e4 m swing: x - Delta is summed from modes of 1e4 m, to
-    // 1e-3 m in f32 and 2e-12 m in f64, while the slow mode keeps the second flight about
-    // 2.5e-3 m below the stop until the swing's bound (its modes' rounding included) is below
-    // it too. So f64 resolves the stay, and f32 does not: it finds a creeping return that
-    // rounding decides, and says so with no figure, never ending before f64's bounce.
+    // The gap of 1.3e-15 m under a 1e4 m swing: the second flight's x - Delta is summed from
+    // modes of 1.1e4 m (the slow one, c1, negative: it keeps the swing below the stop), to
+    // about 1e-3 m in f32 and 2e-12 m in f64. f64 finds no return before the swing's bound, its
+    // modes' rounding included, falls below the stop (28.5 s) and states its figure; f32 finds
+    // a creeping return at 27.2 s whose time's rounding exceeds a quarter of it, and says so
+    // with no figure, never ending before f64's bounce.
     fn creeping<F: Float>() -> Option<(f64, Option<f64>)> {
         let c = contact::<F>(
             24.024_207,
