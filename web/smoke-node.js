@@ -1,5 +1,5 @@
 const fs = require('fs');
-const bytes = fs.readFileSync('process.argv[2]');
+const bytes = fs.readFileSync(process.argv[2]);
 (async () => {
   const { instance } = await WebAssembly.instantiate(bytes, {});
   const x = instance.exports;
@@ -22,4 +22,8 @@ const bytes = fs.readFileSync('process.argv[2]');
   console.log(JSON.stringify(r).slice(0, 400));
   const t = call('trace', { name: 'rigol.csv', text: rigol, args: [] });
   console.log(t.ok ? [t.ok.acquisitions.length, t.ok.low, t.ok.high] : t);
+  const table = call('table', { text: line, args: ['--period', '0.001', '--format', 'rust'] });
+  console.log(table.ok ? [table.ok.text.slice(0, 300), table.ok.plots.length, table.ok.plots[0].envelope.length] : table);
+  const taps = call('replay', { args: ['--taps'], files: [['rigol.csv', rigol]] });
+  console.log(taps.ok ? [taps.ok.text.slice(0, 200), taps.ok.plots.map((p) => p.name)] : taps);
 })();

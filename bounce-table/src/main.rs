@@ -104,25 +104,8 @@ fn taps_main(
         }
     };
     if let Some(dir) = &request.plot {
-        let mut groups: std::collections::BTreeMap<(&str, &str), Vec<&taps::TapLine>> =
-            std::collections::BTreeMap::new();
-        for l in &lines {
-            groups
-                .entry((l.switch.as_str(), l.regime.name()))
-                .or_default()
-                .push(l);
-        }
-        for ((switch, regime), group) in groups {
-            let name = format!(
-                "{dir}/{}-{regime}-taps.svg",
-                identifier(switch).to_lowercase()
-            );
-            if let Err(e) = std::fs::create_dir_all(dir)
-                .and_then(|()| write_atomically(&name, &taps::plot(&group)))
-            {
-                eprintln!("bounce-table replay: {name}: {e}");
-                return ExitCode::FAILURE;
-            }
+        if let Err(code) = write_plots(dir, taps::plots(&lines)) {
+            return code;
         }
     }
     match request.output {
@@ -130,6 +113,18 @@ fn taps_main(
         _ => out!("{}", taps::markdown(&lines, t)),
     }
     ExitCode::SUCCESS
+}
+
+/// Writes `replay --plot DIR`'s plots (named files of SVG) into `dir`.
+fn write_plots(dir: &str, plots: Vec<(String, String)>) -> Result<(), ExitCode> {
+    for (file, svg) in plots {
+        let name = format!("{dir}/{file}");
+        if let Err(e) = std::fs::create_dir_all(dir).and_then(|()| write_atomically(&name, &svg)) {
+            eprintln!("bounce-table replay: {name}: {e}");
+            return Err(ExitCode::FAILURE);
+        }
+    }
+    Ok(())
 }
 
 /// `bounce-table replay`.
@@ -168,25 +163,8 @@ fn replay_main(request: &replay::Request) -> ExitCode {
         }
     };
     if let Some(dir) = &request.plot {
-        let mut groups: std::collections::BTreeMap<(&str, &str), Vec<&replay::Line>> =
-            std::collections::BTreeMap::new();
-        for l in &lines {
-            groups
-                .entry((l.switch.as_str(), l.kind.name()))
-                .or_default()
-                .push(l);
-        }
-        for ((switch, kind), group) in groups {
-            let name = format!(
-                "{dir}/{}-{kind}-replay.svg",
-                identifier(switch).to_lowercase()
-            );
-            if let Err(e) = std::fs::create_dir_all(dir)
-                .and_then(|()| write_atomically(&name, &replay::plot(&group)))
-            {
-                eprintln!("bounce-table replay: {name}: {e}");
-                return ExitCode::FAILURE;
-            }
+        if let Err(code) = write_plots(dir, replay::plots(&lines)) {
+            return code;
         }
     }
     match request.output {

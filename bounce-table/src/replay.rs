@@ -1037,6 +1037,27 @@ pub fn markdown(lines: &[Line]) -> String {
     out
 }
 
+/// Every switch and kind's Pareto plot ([`plot`]), each with its file name
+/// (`<switch>-<kind>-replay.svg`, as `--plot DIR` writes them).
+#[must_use]
+pub fn plots(lines: &[Line]) -> Vec<(String, String)> {
+    let mut groups: std::collections::BTreeMap<(&str, &str), Vec<&Line>> =
+        std::collections::BTreeMap::new();
+    for l in lines {
+        groups
+            .entry((l.switch.as_str(), l.kind.name()))
+            .or_default()
+            .push(l);
+    }
+    groups
+        .into_iter()
+        .map(|((switch, kind), group)| {
+            let stem = crate::output::identifier(switch).to_lowercase();
+            (format!("{stem}-{kind}-replay.svg"), plot(&group))
+        })
+        .collect()
+}
+
 /// The Pareto front of one switch and kind as an SVG: false edges against latency P99 (log
 /// time axis), ours and the peers apart, the rows on the front named beside their points.
 #[must_use]

@@ -133,8 +133,11 @@ enum Source {
     Ready(std::vec::IntoIter<Entry>),
     /// The entries of a whole document (TOML, JSON).
     Document(std::vec::IntoIter<Value>),
-    /// A JSON Lines file: its lines and the number of the last read.
-    Lines(std::io::Lines<std::io::BufReader<std::fs::File>>, usize),
+    /// A JSON Lines file (or text): its lines and the number of the last read.
+    Lines(
+        Box<dyn Iterator<Item = std::io::Result<String>> + Send>,
+        usize,
+    ),
 }
 
 /// An entry as read from its file, not yet parsed: [`Raw::entry`] parses it.
@@ -197,6 +200,18 @@ impl Raw {
 }
 
 impl Entries {
+    /// The entries of JSON Lines held in memory, named `file` in faults (the page in `web/`
+    /// gives its scene lines this way, for the same reading a `.jsonl` file gets).
+    #[must_use]
+    pub fn from_json_lines(file: &str, text: &str) -> Self {
+        let lines: Vec<std::io::Result<String>> = text.lines().map(|l| Ok(l.to_owned())).collect();
+        Self {
+            file: file.into(),
+            source: Source::Lines(Box::new(lines.into_iter()), 0),
+            index: 0,
+        }
+    }
+
     /// The catalogue's entries, as a file's.
     #[must_use]
     pub fn catalogue() -> Self {
@@ -306,7 +321,10 @@ pub fn open(path: &str) -> Result<Entries, Vec<FileError>> {
             .map_err(|e| fail(String::new(), format!("cannot read it: {e}")))?;
         return Ok(Entries {
             file: path.into(),
-            source: Source::Lines(std::io::BufRead::lines(std::io::BufReader::new(file)), 0),
+            source: Source::Lines(
+                Box::new(std::io::BufRead::lines(std::io::BufReader::new(file))),
+                0,
+            ),
             index: 0,
         });
     }
@@ -396,6 +414,25 @@ mod tests {
             message,
         })?;
         entry_of("t", index, value)
+    }
+
+    #[test]
+    fn json_lines_in_memory_read_as_the_same_lines_in_a_file() {
+        // Blank lines skipped, a fault named by its line, the entries indexed alike.
+        let text = "\n{\"name\": \"dome\", \"mass\": 5e-05, \"stiffness\": 5000, \"preload_force\": 1.0, \"restitution\": 0.7, \"closing_speed\": 0.5}\n\n{\"omega\": 1e4}\nnot json\n";
+        let dir = std::env::temp_dir().join(format!("scenes-memory-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).expect("a temporary directory");
+        let path = dir.join("s.jsonl");
+        std::fs::write(&path, text).expect("written");
+        let path = path.to_string_lossy().into_owned();
+        let from_file: Vec<_> = open(&path).expect("opened").collect();
+        let from_memory: Vec<_> = Entries::from_json_lines(&path, text).collect();
+        std::fs::remove_dir_all(&dir).ok();
+        assert_eq!(from_file.len(), 3);
+        assert_eq!(from_file, from_memory);
+        assert!(from_memory[0].is_ok());
+        let fault = from_memory[2].as_ref().expect_err("not JSON");
+        assert_eq!(fault.place, "line 5");
     }
 
     #[test]

@@ -38,10 +38,16 @@ enum Backing {
 }
 
 impl Spool {
-    /// A new, empty spool: a private file in the system's temporary directory, else memory.
+    /// A new, empty spool: a private file in the system's temporary directory, else memory
+    /// (always memory in a browser).
     #[must_use]
     pub fn new() -> Self {
         use std::sync::atomic::{AtomicU64, Ordering};
+        // WebAssembly in a browser (the page in web/) has no files, and its `temp_dir` and
+        // process id panic.
+        if cfg!(all(target_arch = "wasm32", target_os = "unknown")) {
+            return Self::in_memory();
+        }
         static NEXT: AtomicU64 = AtomicU64::new(0);
         let path = std::env::temp_dir().join(format!(
             "bounce-table-spool-{}-{}",

@@ -625,6 +625,27 @@ pub fn markdown(lines: &[TapLine], t: &TapSettings) -> String {
     out
 }
 
+/// Every switch and regime's plot ([`plot`]), each with its file name
+/// (`<switch>-<regime>-taps.svg`, as `--plot DIR` writes them).
+#[must_use]
+pub fn plots(lines: &[TapLine]) -> Vec<(String, String)> {
+    let mut groups: std::collections::BTreeMap<(&str, &str), Vec<&TapLine>> =
+        std::collections::BTreeMap::new();
+    for l in lines {
+        groups
+            .entry((l.switch.as_str(), l.regime.name()))
+            .or_default()
+            .push(l);
+    }
+    groups
+        .into_iter()
+        .map(|((switch, regime), group)| {
+            let stem = crate::output::identifier(switch).to_lowercase();
+            (format!("{stem}-{regime}-taps.svg"), plot(&group))
+        })
+        .collect()
+}
+
 /// One switch and regime as an SVG: missed taps against false edges, ours and the peers apart,
 /// the rows on the Pareto front (no other row has both fewer missed taps and fewer false edges)
 /// named beside their points.

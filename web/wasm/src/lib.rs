@@ -8,11 +8,19 @@
 //! - `eval`: `{"line": <an eval line>, "method": "auto", "precision": "f64"}` -> the result
 //!   object `bounce-table eval` prints for it;
 //! - `calibrate` / `replay`: `{"args": [<options>], "files": [[name, text], ...]}` -> the text
-//!   the subcommand prints (the report, or `--format c|rust|csv|json`);
-//! - `trace`: `{"name": ..., "text": ..., "args": [<options>]}` -> an analog capture's
-//!   acquisitions (times and volts, at most 4,000 points each) and its thresholds.
+//!   the subcommand prints (the report, or `--format c|rust|csv|json`); for `replay` (with
+//!   `--taps` or not), `{"text": ..., "plots": [{"name", "svg"}]}`, the plots `--plot DIR`
+//!   writes (the Pareto fronts);
+//! - `trace`: `{"name": ..., "text": ..., "args": [<options>]}` -> each test to draw: an
+//!   analog capture's acquisitions (times and volts, at most 4,000 points each) and its
+//!   thresholds, or a capture of levels' events; with calibrate's windows;
+//! - `table`: `{"text": <scene lines>, "args": [<table options>]}` -> the table mode's output
+//!   for those switches (`--format table|c|rust|...`, `--period`, `--margin`, ...) and, for
+//!   each, its two plots (the envelope J(t) with the exact impacts, and the motion) as SVG.
 
-use bounce_table::{calibrate, cli, eval, replay, scope};
+use bounce_table::output::render_to;
+use bounce_table::scenes::Entries;
+use bounce_table::{calibrate, cli, eval, plot, replay, scope, table, taps};
 use serde_json::{json, Value};
 
 /// Runs `command` on `input` (JSON): the JSON answer.
@@ -23,6 +31,7 @@ pub fn call(command: &str, input: &str) -> String {
             "eval" => eval_line(&v),
             "calibrate" | "replay" => subcommand(command, &v).map_err(|e| json!({ "error": e })),
             "trace" => trace(&v).map_err(|e| json!({ "error": e })),
+            "table" => table_mode(&v).map_err(|e| json!({ "error": e })),
             "catalogue" => Ok(catalogue()),
             _ => Err(json!({ "error": format!("unknown command {command:?}") })),
         },
@@ -112,18 +121,44 @@ fn subcommand(command: &str, v: &Value) -> Result<Value, String> {
         cli::Invocation::Replay(request) => {
             let loaded =
                 calibrate::load_text(&request.capture, &name, &files).map_err(|e| e.to_string())?;
-            let lines = replay::run(&loaded.events, &request.capture, &request.settings)
-                .map_err(|e| e.to_string())?;
-            Ok(Value::String(replay::report(
-                &loaded,
-                request.capture.quiet,
-                &lines,
-            )))
+            let json = request.output == replay::Output::Json;
+            let (text, plots) = if request.output == replay::Output::Curve {
+                if request.taps.is_some() {
+                    return Err("--format curve is the isolated replay's learning curve; with --taps, give table or json".to_owned());
+                }
+                let curves = replay::learning_curves(&loaded.events, &request.settings)?;
+                (replay::curve_csv(&curves), Vec::new())
+            } else if let Some(t) = &request.taps {
+                let lines = taps::run(&loaded.events, &request.capture, &request.settings, t)?;
+                let text = if json {
+                    taps::json(&lines)
+                } else {
+                    taps::markdown(&lines, t)
+                };
+                (text, taps::plots(&lines))
+            } else {
+                let lines = replay::run(&loaded.events, &request.capture, &request.settings)?;
+                let text = if json {
+                    replay::json(&lines)
+                } else {
+                    replay::report(&loaded, request.capture.quiet, &lines)
+                };
+                (text, replay::plots(&lines))
+            };
+            let plots: Vec<Value> = plots
+                .into_iter()
+                .map(|(name, svg)| json!({ "name": name, "svg": svg }))
+                .collect();
+            Ok(json!({ "text": text, "plots": plots }))
         }
         _ => Err(format!("not {command}")),
     }
 }
 
+/// Each test of a capture to draw, with the window calibrate recommends for its switch and
+/// kind: an analog capture's acquisitions (times and volts, at most 4,000 points each, with
+/// the level changes the input's thresholds give), or a capture of levels' events (their
+/// changes).
 fn trace(v: &Value) -> Result<Value, String> {
     let name = v
         .get("name")
@@ -137,29 +172,42 @@ fn trace(v: &Value) -> Result<Value, String> {
         cli::Invocation::Calibrate(o) => o,
         _ => return Err("not calibrate".to_owned()),
     };
-    let vendor = match o.format {
-        calibrate::Format::Scope(v) => v,
-        _ => return Err("not an analog capture".to_owned()),
-    };
-    let traces =
-        scope::read(name, text, vendor, o.channel.as_deref()).map_err(|e| e.to_string())?;
-    let swing = scope::swing(name, &traces).map_err(|e| e.to_string())?;
-    let (low, high, how) = scope::thresholds(name, &o.input, &swing).map_err(|e| e.to_string())?;
-    // The windows calibrate recommends, per kind (none below its minimum of events).
     let stem = std::path::Path::new(name)
         .file_stem()
         .map_or_else(|| name.to_owned(), |s| s.to_string_lossy().into_owned());
     let loaded = calibrate::load_text(&o, &stem, &[(name.to_owned(), text.to_owned())])
         .map_err(|e| e.to_string())?;
+    // The windows calibrate recommends, per switch and kind (none below its minimum of
+    // events), keyed "switch/kind".
     let groups = calibrate::group(&loaded.events, o.resolution, o.burst_gap);
     let mut windows = serde_json::Map::new();
-    for ((_, kind), d) in &groups {
+    for ((switch, kind), d) in &groups {
         let refs: Vec<&bounce_table::capture::Description> = d.iter().collect();
         let w = calibrate::window(&refs, o.percentile);
         if !w.too_few() {
-            windows.insert(kind.name().to_owned(), json!(w.recommended()));
+            windows.insert(format!("{switch}/{}", kind.name()), json!(w.recommended()));
         }
     }
+    let calibrate::Format::Scope(vendor) = o.format else {
+        let tests: Vec<Value> = loaded
+            .events
+            .iter()
+            .map(|e| {
+                json!({
+                    "switch": e.switch,
+                    "kind": e.kind.name(),
+                    "origin": e.origin,
+                    "section": e.section,
+                    "changes": e.changes,
+                })
+            })
+            .collect();
+        return Ok(json!({ "acquisitions": tests, "windows": windows }));
+    };
+    let traces =
+        scope::read(name, text, vendor, o.channel.as_deref()).map_err(|e| e.to_string())?;
+    let swing = scope::swing(name, &traces).map_err(|e| e.to_string())?;
+    let (low, high, how) = scope::thresholds(name, &o.input, &swing).map_err(|e| e.to_string())?;
     let acquisitions: Vec<Value> = traces
         .iter()
         .map(|t| {
@@ -172,6 +220,7 @@ fn trace(v: &Value) -> Result<Value, String> {
                 "press"
             };
             json!({
+                "switch": stem,
                 "channel": t.channel,
                 "t": pick(&t.times),
                 "v": pick(&t.volts),
@@ -186,6 +235,64 @@ fn trace(v: &Value) -> Result<Value, String> {
         "high": high,
         "how": how,
         "windows": windows,
+    }))
+}
+
+/// The name the page's scene lines go by, in faults and in generated code.
+const PAGE_SCENES: &str = "scenes.jsonl";
+
+/// The table mode on the page's scene lines, as `bounce-table [OPTIONS] scenes.jsonl` runs it,
+/// with each switch's plots.
+fn table_mode(v: &Value) -> Result<Value, String> {
+    let text = v.get("text").and_then(Value::as_str).unwrap_or("");
+    let mut args = strings(v, "args");
+    args.push(PAGE_SCENES.to_owned());
+    let options = match cli::parse(args).map_err(|e| e.message)? {
+        cli::Invocation::Table(o) => o,
+        _ => return Err("not the table mode".to_owned()),
+    };
+    let mut faults = Vec::new();
+    let analysed = table::analyse_all(
+        Entries::from_json_lines(PAGE_SCENES, text),
+        &options.settings,
+        options.format,
+        PAGE_SCENES,
+        &mut |message| faults.push(message),
+    );
+    let Some((mut analyses, layout)) = analysed else {
+        return Err(faults.join("\n"));
+    };
+    let mut out = Vec::new();
+    render_to(
+        &mut out,
+        options.format,
+        &mut analyses,
+        &options.settings,
+        false,
+        PAGE_SCENES,
+        Some(layout),
+    )
+    .map_err(|e| e.to_string())?;
+    let mut plots = Vec::new();
+    let rows = analyses.rows().map_err(|e| e.to_string())?;
+    for (entry, a) in Entries::from_json_lines(PAGE_SCENES, text).zip(rows) {
+        let (Ok(entry), Ok(a)) = (entry, a) else {
+            continue;
+        };
+        let (envelope, motion) =
+            plot::plots(entry.template.nominal(), &a, options.settings.percentile)
+                .map_err(|e| format!("{}: {}", e.field, e.message))?;
+        plots.push(json!({
+            "name": entry.name,
+            "window": a.window,
+            "bounce": a.nominal.bounce,
+            "envelope": envelope,
+            "motion": motion,
+        }));
+    }
+    Ok(json!({
+        "text": String::from_utf8_lossy(&out),
+        "plots": plots,
     }))
 }
 
