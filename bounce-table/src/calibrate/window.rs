@@ -29,6 +29,9 @@ pub const MIN_EVENTS: usize = 10;
 /// Beyond this multiple of the largest bounce observed, a window says why.
 pub const FAR_BEYOND: f64 = 2.0;
 
+/// From this many bouncing events on, a far window is not blamed on their number.
+const MANY_EVENTS: usize = 100;
+
 impl CaptureWindow {
     /// The window: the predictive percentile, or the largest bounce observed if that is
     /// longer (a window below a bounce already seen is wrong whatever the model says).
@@ -60,8 +63,16 @@ impl CaptureWindow {
                 } else {
                     format!("{times:.1e}")
                 };
+                // (The cause depends on the count: a few events give a wide fit; many that
+                // the model's shape does not follow, a tail beyond them. A 10 MB capture of
+                // 1,040 bouncing releases was called "so few".)
+                let why = if self.bouncing < MANY_EVENTS {
+                    "and the tail of a fit to so few reaches far"
+                } else {
+                    "and the fitted model's tail reaches far beyond them"
+                };
                 Some(format!(
-                    "{times} times the largest observed: {} bouncing events spread widely, and the tail of a fit to so few reaches far",
+                    "{times} times the largest observed: {} bouncing events spread widely, {why}",
                     self.bouncing
                 ))
             }
@@ -118,5 +129,38 @@ pub fn chronological_cover(d: &[&capture::Description], percentile: f64, fractio
         covered: later.iter().filter(|x| x.bounce <= w.recommended()).count(),
         later: later.len(),
         later_max: later.iter().map(|x| x.bounce).fold(0.0, f64::max),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_far_window_is_blamed_on_few_events_only_when_they_are_few() {
+        let far = |bouncing| CaptureWindow {
+            observed: 1e-3,
+            predictive: Some(2.3e-3),
+            bouncing,
+            events: bouncing,
+        };
+        let few = far(12).reason().unwrap_or_default();
+        let many = far(1040).reason().unwrap_or_default();
+        assert!(
+            few.starts_with("2.3 times") && few.contains("so few"),
+            "{few}"
+        );
+        assert!(
+            many.starts_with("2.3 times") && !many.contains("so few"),
+            "{many}"
+        );
+        assert_eq!(
+            CaptureWindow {
+                predictive: Some(1.5e-3),
+                ..far(1040)
+            }
+            .reason(),
+            None
+        );
     }
 }
