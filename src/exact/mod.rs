@@ -727,7 +727,8 @@ pub(crate) trait Flights<F: Float> {
     /// the flight: (an error of its time (s), a relative error of its speed, which every later
     /// flight inherits), each an epsilon times the sizes of the terms the return is the
     /// difference of, over the return speed. (0, 0) where the flight's own form keeps its
-    /// digits (viscous flights: their terms decay with the motion).
+    /// digits (viscous flights: their terms decay with the motion). Before the first flight,
+    /// (0, the relative error of the first flight's fall from the model's starting state).
     fn rounding(&self) -> (F, F) {
         (F::ZERO, F::ZERO)
     }
@@ -943,7 +944,8 @@ fn solve<F: Float, D: Dissipation<F>, M: Flights<F> + Copy, S: OffsetSign, const
     let mut last_flight = F::ZERO;
     // Ill-conditioned returns' rounding (`Flights::rounding`): the time it moved (s), and the
     // relative error of the speed the later flights inherit.
-    let (mut conditioned, mut inherited) = (F::ZERO, F::ZERO);
+    // The first flight inherits the starting state's rounding (a bound already).
+    let (mut conditioned, mut inherited) = (F::ZERO, flights.rounding().1);
     let mut last_decay = F::ONE;
     // The model before the last flight that returned, its departure and its time: the
     // conditioning of a gap's last return is probed from there.
