@@ -172,7 +172,7 @@ function drawTest(box, trace, a, k) {
   const changes = analog ? a.changes : a.changes.map((t) => t - a.changes[0]);
   const draw = (t0, t1) => {
     const [scale, name] = unit(t1 - t0);
-    const vmin = analog ? Math.min(...a.v, trace.low) : -0.1, vmax = analog ? Math.max(...a.v, trace.high) : 1.1;
+    const vmin = analog ? Math.min(...a.v, a.low) : -0.1, vmax = analog ? Math.max(...a.v, a.high) : 1.1;
     const x = (t) => left + (w - left - right) * (t - t0) / (t1 - t0);
     const y = (v) => h - bottom - (h - top - bottom) * (v - vmin) / (vmax - vmin);
     let d = '';
@@ -205,11 +205,11 @@ function drawTest(box, trace, a, k) {
       if (c >= t0 && c <= t1) marks += `<line x1="${x(c)}" x2="${x(c)}" y1="${h - bottom - 6}" y2="${h - bottom}" stroke="#c00"/>`;
     }
     const thresholds = analog ? `
-      <line x1="${left}" x2="${w - right}" y1="${y(trace.low)}" y2="${y(trace.low)}" stroke="#07c" stroke-dasharray="4"/>
-      <line x1="${left}" x2="${w - right}" y1="${y(trace.high)}" y2="${y(trace.high)}" stroke="#c70" stroke-dasharray="4"/>
-      <text x="${w - right + 4}" y="${y(trace.low) + 4}" font-size="11">low ${trace.low.toFixed(2)} V</text>
-      <text x="${w - right + 4}" y="${y(trace.high) + 4}" font-size="11">high ${trace.high.toFixed(2)} V</text>` : '';
-    const title = analog ? `acquisition ${k + 1} (${a.kind}), ${a.channel}` : `${a.origin} (${a.kind}), ${a.switch}${a.section ? ', ' + a.section : ''}`;
+      <line x1="${left}" x2="${w - right}" y1="${y(a.low)}" y2="${y(a.low)}" stroke="#07c" stroke-dasharray="4"/>
+      <line x1="${left}" x2="${w - right}" y1="${y(a.high)}" y2="${y(a.high)}" stroke="#c70" stroke-dasharray="4"/>
+      <text x="${w - right + 4}" y="${y(a.low) + 4}" font-size="11">low ${a.low.toFixed(2)} V</text>
+      <text x="${w - right + 4}" y="${y(a.high) + 4}" font-size="11">high ${a.high.toFixed(2)} V</text>` : '';
+    const title = analog ? `acquisition ${k + 1} (${a.kind}), ${a.file}, ${a.channel}` : `${a.origin} (${a.kind}), ${a.switch}${a.section ? ', ' + a.section : ''}`;
     box.innerHTML = `<svg width="${w}" height="${h}" xmlns="http://www.w3.org/2000/svg" style="user-select:none">
       <text x="${left}" y="14" font-size="12">${escape(title)}: ${a.changes.length} level changes</text>
       ${marks}${axes}${thresholds}
@@ -235,24 +235,28 @@ function escape(text) {
 
 // The capture's steps, each one command in the worker: the trace (analog captures), calibrate,
 // replay on isolated presses, and replay on taps with human timing.
-async function analyse(name, text) {
+// `files`: one capture file, or a folder's files (several acquisitions, one a file), each
+// [name, text]; `switch` names a folder.
+async function analyse(files, folder) {
   const args = document.getElementById('options').value.split(/\s+/).filter((s) => s);
   const error = document.getElementById('capture-error');
   error.textContent = '';
   const bar = document.getElementById('progress-bar'), label = document.getElementById('progress');
-  const files = [[name, text]];
+  const common = folder ? { files, switch: folder } : { files };
   const steps = [
-    ['trace', { name, text, args }, 'reading the trace'],
-    ['calibrate', { args, files }, 'calibrate'],
-    ['replay', { args, files }, 'replay (isolated presses)'],
-    ['replay', { args: [...args, '--taps'], files }, 'replay (taps with human timing)'],
+    ['trace', { ...common, args }, 'reading the trace'],
+    ['calibrate', { ...common, args }, 'calibrate'],
+    ['replay', { ...common, args }, 'replay (isolated presses)'],
+    ['replay', { ...common, args: [...args, '--taps'] }, 'replay (taps with human timing)'],
   ];
+  const size = files.reduce((sum, [, text]) => sum + text.length, 0);
+  const name = folder ? `${folder} (${files.length} files)` : files[0][0];
   for (const id of ['plot', 'calibrate', 'replay', 'taps', 'replay-plots', 'taps-plots']) document.getElementById(id).innerHTML = '';
   bar.max = steps.length; bar.hidden = false;
   const errors = [];
   for (const [k, [command, input, what]] of steps.entries()) {
     bar.value = k;
-    label.textContent = `${name} (${(text.length / 1e6).toFixed(1)} MB): ${what}, step ${k + 1} of ${steps.length}`;
+    label.textContent = `${name} (${(size / 1e6).toFixed(1)} MB): ${what}, step ${k + 1} of ${steps.length}`;
     const r = await ask(command, input);
     if (k === 0) {
       if (r.ok) plot(r.ok);
@@ -296,11 +300,20 @@ async function main() {
   evaluate();
   document.getElementById('tab-calc').onclick = () => tab('calc');
   document.getElementById('tab-capture').onclick = () => tab('capture');
-  const read = (file) => file.text().then((text) => analyse(file.name, text));
-  document.getElementById('file').onchange = (e) => read(e.target.files[0]);
+  // Several files are a folder's (sorted by name and hidden files left out, as the CLI reads a
+  // folder), named by their folder where the browser says it (else "capture").
+  const read = async (list) => {
+    const chosen = [...list].filter((f) => !f.name.startsWith('.')).sort((a, b) => (a.name < b.name ? -1 : a.name > b.name ? 1 : 0));
+    if (!chosen.length) return;
+    const files = await Promise.all(chosen.map(async (f) => [f.name, await f.text()]));
+    const path = chosen[0].webkitRelativePath || '';
+    const folder = files.length > 1 ? (path.includes('/') ? path.split('/')[0] : 'capture') : null;
+    analyse(files, folder);
+  };
+  document.getElementById('file').onchange = (e) => read(e.target.files);
   const drop = document.getElementById('drop');
   drop.ondragover = (e) => e.preventDefault();
-  drop.ondrop = (e) => { e.preventDefault(); read(e.dataTransfer.files[0]); };
+  drop.ondrop = (e) => { e.preventDefault(); read(e.dataTransfer.files); };
 }
 
 main();

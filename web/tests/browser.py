@@ -30,6 +30,13 @@ def cli(*args, stdin=None, cwd=None):
     return subprocess.run([BIN, *args], input=stdin, capture_output=True, text=True, check=True, cwd=cwd).stdout
 
 
+def choose(driver, *paths):
+    """Chooses these files in the capture's file input, and only these (the input takes
+    several files, and the driver adds to what was chosen before), calibrate's text cleared."""
+    driver.execute_script("document.getElementById('calibrate').textContent = ''; document.getElementById('file').value = ''")
+    driver.find_element(By.ID, "file").send_keys("\n".join(paths))
+
+
 def main():
     options = webdriver.ChromeOptions()
     for a in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--window-size=1200,1400"):
@@ -86,7 +93,7 @@ def main():
         # A Rigol export: calibrate's text, as the CLI prints it.
         driver.find_element(By.ID, "tab-capture").click()
         rigol = os.path.join(ROOT, "bounce-table/tests/fixtures/scope/rigol.csv")
-        driver.find_element(By.ID, "file").send_keys(rigol)
+        choose(driver, rigol)
         wait.until(lambda d: d.find_element(By.ID, "calibrate").text != "")
         page = driver.find_element(By.ID, "calibrate").get_attribute("textContent")
         text = cli("calibrate", rigol)
@@ -112,12 +119,28 @@ def main():
         assert shown == want, (shown, want)
         if SHOTS:
             driver.save_screenshot(os.path.join(SHOTS, "web-capture.png"))
+        # A folder of one acquisition a file (the Rigol export split): the files chosen
+        # together, read as the CLI reads the folder (named "capture" where the browser gives no
+        # folder).
+        with tempfile.TemporaryDirectory() as tmp:
+            folder = os.path.join(tmp, "capture")
+            os.mkdir(folder)
+            parts = ["X,CH1," + p for p in open(rigol).read().split("X,CH1,") if p]
+            paths = []
+            for i, part in enumerate(parts):
+                paths.append(os.path.join(folder, f"acq{i:02}.csv"))
+                with open(paths[-1], "w") as f:
+                    f.write(part)
+            choose(driver, *paths)
+            wait.until(lambda d: d.find_element(By.ID, "calibrate").text != "" and d.find_element(By.ID, "progress").text == "")
+            page = driver.find_element(By.ID, "calibrate").get_attribute("textContent")
+            assert page.strip() == cli("calibrate", folder).strip(), "calibrate differs on a folder:\n" + page[:500]
+            assert driver.find_element(By.ID, "pager").text == f"tests 1-6 of {len(parts)}"
         # The shared capture (where it is present): calibrate's, replay's and the taps' text,
         # as the CLI's.
         shared = os.path.join(ROOT, "..", "shared", "data", "bouncy-button-uno.jsonl")
         if os.path.exists(shared):
-            driver.execute_script("document.getElementById('calibrate').textContent = ''")
-            driver.find_element(By.ID, "file").send_keys(os.path.abspath(shared))
+            choose(driver, os.path.abspath(shared))
             WebDriverWait(driver, 300).until(lambda d: d.find_element(By.ID, "calibrate").text != "" and d.find_element(By.ID, "progress").text == "")
             for element, args in (("calibrate", ("calibrate",)), ("replay", ("replay",)), ("taps", ("replay", "--taps"))):
                 page = driver.find_element(By.ID, element).get_attribute("textContent")
@@ -140,8 +163,7 @@ def main():
             with open(big, "w") as f:
                 f.write(one * 104)
             assert os.path.getsize(big) > 10_000_000
-            driver.execute_script("document.getElementById('calibrate').textContent = ''")
-            driver.find_element(By.ID, "file").send_keys(big)
+            choose(driver, big)
             wait.until(lambda d: d.find_element(By.ID, "progress").text != "")
             seen, slowest = [], 0.0
             while driver.find_element(By.ID, "calibrate").text == "":

@@ -11,12 +11,15 @@
 //!   the subcommand prints (the report, or `--format c|rust|csv|json`); for `replay` (with
 //!   `--taps` or not), `{"text": ..., "plots": [{"name", "svg"}]}`, the plots `--plot DIR`
 //!   writes (the Pareto fronts);
-//! - `trace`: `{"name": ..., "text": ..., "args": [<options>]}` -> each test to draw: an
-//!   analog capture's acquisitions (times and volts, at most 4,000 points each) and its
-//!   thresholds, or a capture of levels' events; with calibrate's windows;
+//! - `trace`: `{"args": [<options>], "files": [[name, text], ...]}` -> each test to draw: an
+//!   analog capture's acquisitions (times and volts, at most 4,000 points each) with their
+//!   file's thresholds, or a capture of levels' events; with calibrate's windows;
 //! - `table`: `{"text": <scene lines>, "args": [<table options>]}` -> the table mode's output
 //!   for those switches (`--format table|c|rust|...`, `--period`, `--margin`, ...) and, for
 //!   each, its two plots (the envelope J(t) with the exact impacts, and the motion) as SVG.
+//!
+//! Several files in `files` are a folder's, read as the CLI reads a folder: `"switch"` names
+//! it (else the first file's name without its extension names the switch).
 
 use bounce_table::output::render_to;
 use bounce_table::scenes::Entries;
@@ -101,6 +104,18 @@ fn files(v: &Value) -> Vec<(String, String)> {
         .unwrap_or_default()
 }
 
+/// The switch the capture's files are: `"switch"` where given (a folder's name, for several
+/// files), else the first file's name without its extension, as the CLI names them.
+fn switch_name(v: &Value, files: &[(String, String)]) -> String {
+    if let Some(name) = v.get("switch").and_then(Value::as_str) {
+        return name.to_owned();
+    }
+    let first = files.first().map_or("capture", |(name, _)| name.as_str());
+    std::path::Path::new(first)
+        .file_stem()
+        .map_or_else(|| first.to_owned(), |s| s.to_string_lossy().into_owned())
+}
+
 fn subcommand(command: &str, v: &Value) -> Result<Value, String> {
     let files = files(v);
     let Some((first, _)) = files.first() else {
@@ -110,9 +125,7 @@ fn subcommand(command: &str, v: &Value) -> Result<Value, String> {
     args.extend(strings(v, "args"));
     args.push(first.clone());
     let invocation = cli::parse(args).map_err(|e| e.message)?;
-    let name = std::path::Path::new(first)
-        .file_stem()
-        .map_or_else(|| first.clone(), |s| s.to_string_lossy().into_owned());
+    let name = switch_name(v, &files);
     match invocation {
         cli::Invocation::Calibrate(o) => {
             let loaded = calibrate::load_text(&o, &name, &files).map_err(|e| e.to_string())?;
@@ -160,23 +173,19 @@ fn subcommand(command: &str, v: &Value) -> Result<Value, String> {
 /// the level changes the input's thresholds give), or a capture of levels' events (their
 /// changes).
 fn trace(v: &Value) -> Result<Value, String> {
-    let name = v
-        .get("name")
-        .and_then(Value::as_str)
-        .unwrap_or("capture.csv");
-    let text = v.get("text").and_then(Value::as_str).unwrap_or("");
+    let files = files(v);
+    let Some((first, _)) = files.first() else {
+        return Err("no capture".to_owned());
+    };
     let mut args = vec!["calibrate".to_owned()];
     args.extend(strings(v, "args"));
-    args.push(name.to_owned());
+    args.push(first.clone());
     let o = match cli::parse(args).map_err(|e| e.message)? {
         cli::Invocation::Calibrate(o) => o,
         _ => return Err("not calibrate".to_owned()),
     };
-    let stem = std::path::Path::new(name)
-        .file_stem()
-        .map_or_else(|| name.to_owned(), |s| s.to_string_lossy().into_owned());
-    let loaded = calibrate::load_text(&o, &stem, &[(name.to_owned(), text.to_owned())])
-        .map_err(|e| e.to_string())?;
+    let stem = switch_name(v, &files);
+    let loaded = calibrate::load_text(&o, &stem, &files).map_err(|e| e.to_string())?;
     // The windows calibrate recommends, per switch and kind (none below its minimum of
     // events), keyed "switch/kind".
     let groups = calibrate::group(&loaded.events, o.resolution, o.burst_gap);
@@ -204,13 +213,16 @@ fn trace(v: &Value) -> Result<Value, String> {
             .collect();
         return Ok(json!({ "acquisitions": tests, "windows": windows }));
     };
-    let traces =
-        scope::read(name, text, vendor, o.channel.as_deref()).map_err(|e| e.to_string())?;
-    let swing = scope::swing(name, &traces).map_err(|e| e.to_string())?;
-    let (low, high, how) = scope::thresholds(name, &o.input, &swing).map_err(|e| e.to_string())?;
-    let acquisitions: Vec<Value> = traces
-        .iter()
-        .map(|t| {
+    // Each file's acquisitions, with that file's thresholds (a folder's files are read one
+    // by one, as the CLI reads them).
+    let mut acquisitions = Vec::new();
+    for (name, text) in &files {
+        let traces =
+            scope::read(name, text, vendor, o.channel.as_deref()).map_err(|e| e.to_string())?;
+        let swing = scope::swing(name, &traces).map_err(|e| e.to_string())?;
+        let (low, high, how) =
+            scope::thresholds(name, &o.input, &swing).map_err(|e| e.to_string())?;
+        for t in &traces {
             let levels = scope::to_levels(t, low, high, &swing, o.polarity);
             let step = (t.times.len() / 4000).max(1);
             let pick = |xs: &[f64]| xs.iter().step_by(step).copied().collect::<Vec<f64>>();
@@ -219,23 +231,21 @@ fn trace(v: &Value) -> Result<Value, String> {
             } else {
                 "press"
             };
-            json!({
+            acquisitions.push(json!({
                 "switch": stem,
+                "file": name,
                 "channel": t.channel,
                 "t": pick(&t.times),
                 "v": pick(&t.volts),
                 "changes": levels.stream.changes,
                 "kind": kind,
-            })
-        })
-        .collect();
-    Ok(json!({
-        "acquisitions": acquisitions,
-        "low": low,
-        "high": high,
-        "how": how,
-        "windows": windows,
-    }))
+                "low": low,
+                "high": high,
+                "how": how,
+            }));
+        }
+    }
+    Ok(json!({ "acquisitions": acquisitions, "windows": windows }))
 }
 
 /// The name the page's scene lines go by, in faults and in generated code.
