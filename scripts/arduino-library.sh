@@ -13,8 +13,7 @@
 # Cortex-M0, the same instructions). The stand-in taps a bouncing button 40 times (keys of a
 # 4x4 matrix for Keypad); LearnButton and Keypad must report exactly those 40 presses, in order;
 # PhysicsWindow must lose none (a physics window may let bounces through: its count is shown).
-# ESP32-C3 (riscv32) is compiled and linked only: no simulator here runs it. PhysicsWindow on the
-# Mega 2560 is a known failure, printed as such (the library's README says why). Last, the AVR
+# ESP32-C3 (riscv32) is compiled and linked only: no simulator here runs it. Last, the AVR
 # boards' examples are built with the real Arduino AVR core (Debian's arduino-core-avr) and
 # must fit the board.
 #
@@ -200,14 +199,6 @@ for board in "${boards[@]}"; do
           continue
           ;;
       esac
-      if [ "$example/$mcu" = PhysicsWindow/atmega2560 ] && grep -qx 'bad switch' "$b.log"; then
-        # Known: cb_preload_bounce_time takes 26 bytes of arguments, so avr-gcc passes the last
-        # ones on the stack; on the ATmega2560 (a 3-byte return address) the library reads them
-        # wrong and refuses the closing speed. The learner's entry points take no stack
-        # argument and run (LearnButton, Keypad above). The library's README says so.
-        echo "KNOWN FAILURE: $example on the $name ($rel): the physics entry points' stack arguments are misread on the ATmega2560 (the library's README)"
-        continue
-      fi
       if ! grep -qx end "$b.log"; then
         echo "FAIL: $example on the $name ($rel) did not run to its end:" >&2
         tail -n 5 "$b.log" >&2

@@ -107,9 +107,9 @@ echo "ok: the C API on the Uno in simavr ($(wc -l < "$tmp/want") lines, as on th
 # library's share is the program's flash (text and initialised data) minus that of the same
 # program with no call. RAM is the data and bss before any stack.
 calls=(
-  "\`cb_preload_bounce_seconds\`|out_e = cb_preload_bounce_seconds(in[0], in[1], in[2], in[3], in[4], in[5], &s); out_f = s;"
-  "\`cb_preload_bounce_time\`|out_e = cb_preload_bounce_time(in[0], in[1], in[2], in[3], in[4], in[5], &est); out_f = est.time + est.expected_error;"
-  "\`cb_preload_restitution_seconds\`|out_e = cb_preload_restitution_seconds(in[0], in[1], in[2], in[3], in[4], &s); out_f = s;"
+  "\`cb_preload_viscous_bounce_seconds\`|out_e = cb_preload_viscous_bounce_seconds(&lean, &s); out_f = s;"
+  "\`cb_preload_viscous_bounce_time\`|out_e = cb_preload_viscous_bounce_time(&lean, &est); out_f = est.time + est.expected_error;"
+  "\`cb_preload_restitution_bounce_seconds\`|out_e = cb_preload_restitution_bounce_seconds(&lean, &s); out_f = s;"
   "\`cb_switch_check\`|out_e = cb_switch_check(&sw);"
   "\`cb_preload_seconds_closed\`|out_e = cb_preload_seconds_closed(&sw, &s); out_f = s;"
   "\`cb_preload_seconds_averaged\`|out_e = cb_preload_seconds_averaged(&sw, &s); out_f = s;"
@@ -136,6 +136,7 @@ volatile float out_f;
 volatile uint16_t out_e;
 int main(void) {
     cb_switch sw = {in[0], in[1], in[2], in[3], in[4], in[5], in[6]};
+    cb_preloaded lean = {in[0], in[1], in[2], in[3], in[4], in[5]};
     float s = 0.0f;
     cb_prediction p;
     cb_estimate est;
@@ -144,7 +145,7 @@ int main(void) {
     cb_learner_prior lp;
     cb_learner key;
     cb_learned saved;
-    (void)sw; (void)s; (void)p; (void)est; (void)w; (void)pin; (void)lp; (void)key; (void)saved;
+    (void)sw; (void)lean; (void)s; (void)p; (void)est; (void)w; (void)pin; (void)lp; (void)key; (void)saved;
     $1
     for (;;) {
     }

@@ -16,7 +16,7 @@ use crate::prediction::{Approximations, Count, Course, Prediction, Tier, Time};
 use crate::quadrature::{integrate_exp, panel, Nodes, MAX_PANELS, PANEL_WIDTH};
 use crate::regime::Regime;
 use crate::scene::{lean_preload, AnySign, OffsetSign};
-use crate::{accuracy, Float, Scene};
+use crate::{accuracy, Float, Preloaded, Scene};
 
 /// The averaged model's bounce time (s) of a preloaded contact with restitution alone, straight
 /// from its datasheet-like inputs, with no [`Scene`] and no expected error: the lean path for
@@ -35,8 +35,11 @@ use crate::{accuracy, Float, Scene};
 /// [`Window::from_seconds`]: crate::Window::from_seconds
 ///
 /// ```
-/// use contact_bounce::{tiers::preload_restitution_bounce_seconds, Margin, Window};
-/// let t = preload_restitution_bounce_seconds(5e-5_f32, 5000.0, 1.0, 0.5, 0.7)?;
+/// use contact_bounce::{tiers::preload_restitution_bounce_seconds, Margin, Preloaded, Window};
+/// let t = preload_restitution_bounce_seconds(&Preloaded {
+///     mass: 5e-5_f32, stiffness: 5000.0, preload_force: 1.0,
+///     closing_speed: 0.5, restitution: 0.7, damping_ratio: 0.0, // restitution alone
+/// })?;
 /// let window = Window::from_seconds(t, &Margin::new(1.5, 0.0)?, 10e-6)?;
 /// assert_eq!(window.ticks(), 18); // 116.3 us, +50 %
 /// # Ok::<(), contact_bounce::Error>(())
@@ -50,22 +53,15 @@ use crate::{accuracy, Float, Scene};
 /// [`Reason::Overflow`] for a first impulse below [`Scene::impulse_floor`] or Omega (1 + R) v0
 /// above the float's largest value over 2^17; [`Parameter::PreloadForce`] with
 /// [`Reason::Overflow`] when the time is not a normal number of the float (it overflowed, or
-/// underflowed below the smallest normal number).
-pub fn preload_restitution_bounce_seconds<F: Float>(
-    mass: F,
-    stiffness: F,
-    preload_force: F,
-    closing_speed: F,
-    restitution: F,
-) -> Result<F, Error> {
-    let p = lean_preload(
-        mass,
-        stiffness,
-        preload_force,
-        closing_speed,
-        restitution,
-        F::ZERO,
-    )?;
+/// underflowed below the smallest normal number); [`Parameter::DampingRatio`] with
+/// [`Reason::OutOfRange`] for any damping ratio but 0 (the path has no damping: use
+/// [`preload_viscous_bounce_seconds`](crate::tiers::preload_viscous_bounce_seconds)).
+pub fn preload_restitution_bounce_seconds<F: Float>(switch: &Preloaded<F>) -> Result<F, Error> {
+    let p = lean_preload(switch)?;
+    // Restitution alone: a damping ratio would be left out of the time without a word.
+    if switch.damping_ratio != F::ZERO {
+        return Err(Error::new(Parameter::DampingRatio, Reason::OutOfRange));
+    }
     // J_B / |q| = j0 / 2.
     let integral = crate::quadrature::inverse_tangent_integral(p.j0 * F::HALF);
     let time = F::TWO * integral / p.loss * p.inverse_omega;

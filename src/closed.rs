@@ -11,7 +11,7 @@ use crate::prediction::{Approximations, ClosedForm, Count, Course, Prediction, T
 use crate::quadrature::Compensated;
 use crate::regime::Regime;
 use crate::scene::{lean_preload, OffsetSign};
-use crate::{accuracy, Float, Scene};
+use crate::{accuracy, Float, Preloaded, Scene};
 
 /// A closed-form time with the error to expect of it. The methods that give one
 /// ([`Scene::t_b1`], [`Scene::t_b1v`], [`Scene::t_b2`], [`Scene::t_b2r`], [`Scene::t_grazing`])
@@ -47,9 +47,7 @@ impl<F: Float> Estimate<F> {
 /// ```
 /// use contact_bounce::{catalogue, tiers::preload_viscous_bounce_time};
 /// let d = catalogue::TACTILE_DOME;
-/// let lean = preload_viscous_bounce_time(
-///     d.mass, d.stiffness, d.preload_force, d.closing_speed, d.restitution, d.damping_ratio,
-/// )?;
+/// let lean = preload_viscous_bounce_time(&d.preloaded::<f64>())?;
 /// let scene = d.scene::<f64>()?;
 /// let full = scene.t_b1v().map(|e| e.time);
 /// assert!(full.is_some_and(|t| (lean.time / t - 1.0).abs() < 1e-12));
@@ -65,22 +63,8 @@ impl<F: Float> Estimate<F> {
 /// [`Scene::impulse_floor`] or Omega (1 + R) v0 above the float's largest value over 2^17;
 /// [`Parameter::PreloadForce`] with [`Reason::Overflow`](crate::Reason::Overflow) when the time is not a normal
 /// number of the float (it overflowed, or underflowed below the smallest normal number).
-pub fn preload_viscous_bounce_time<F: Float>(
-    mass: F,
-    stiffness: F,
-    preload_force: F,
-    closing_speed: F,
-    restitution: F,
-    damping_ratio: F,
-) -> Result<Estimate<F>, Error> {
-    let lean = lean_tb1v(
-        mass,
-        stiffness,
-        preload_force,
-        closing_speed,
-        restitution,
-        damping_ratio,
-    )?;
+pub fn preload_viscous_bounce_time<F: Float>(switch: &Preloaded<F>) -> Result<Estimate<F>, Error> {
+    let lean = lean_tb1v(switch)?;
     Ok(Estimate {
         time: lean.time,
         expected_error: accuracy::t_b1v(lean.j0, lean.restitution, lean.zeta),
@@ -96,8 +80,11 @@ pub fn preload_viscous_bounce_time<F: Float>(
 /// [`Window::from_seconds`]: crate::Window::from_seconds
 ///
 /// ```
-/// use contact_bounce::{tiers::preload_viscous_bounce_seconds, Margin, Window};
-/// let t = preload_viscous_bounce_seconds(5e-5_f32, 5000.0, 1.0, 0.5, 0.7, 0.03)?;
+/// use contact_bounce::{tiers::preload_viscous_bounce_seconds, Margin, Preloaded, Window};
+/// let t = preload_viscous_bounce_seconds(&Preloaded {
+///     mass: 5e-5_f32, stiffness: 5000.0, preload_force: 1.0,
+///     closing_speed: 0.5, restitution: 0.7, damping_ratio: 0.03,
+/// })?;
 /// let window = Window::from_seconds(t, &Margin::new(1.5, 0.0)?, 10e-6)?;
 /// assert_eq!(window.ticks(), 18); // 115.3 us, +50 %
 /// # Ok::<(), contact_bounce::Error>(())
@@ -105,23 +92,8 @@ pub fn preload_viscous_bounce_time<F: Float>(
 ///
 /// # Errors
 /// As [`preload_viscous_bounce_time`].
-pub fn preload_viscous_bounce_seconds<F: Float>(
-    mass: F,
-    stiffness: F,
-    preload_force: F,
-    closing_speed: F,
-    restitution: F,
-    damping_ratio: F,
-) -> Result<F, Error> {
-    lean_tb1v(
-        mass,
-        stiffness,
-        preload_force,
-        closing_speed,
-        restitution,
-        damping_ratio,
-    )
-    .map(|lean| lean.time)
+pub fn preload_viscous_bounce_seconds<F: Float>(switch: &Preloaded<F>) -> Result<F, Error> {
+    lean_tb1v(switch).map(|lean| lean.time)
 }
 
 /// t_b1v from the inputs, with what its expected error needs.
@@ -134,22 +106,8 @@ struct LeanTb1v<F> {
 
 /// The checks and the arithmetic of [`preload_viscous_bounce_time`].
 #[inline]
-fn lean_tb1v<F: Float>(
-    mass: F,
-    stiffness: F,
-    preload_force: F,
-    closing_speed: F,
-    restitution: F,
-    damping_ratio: F,
-) -> Result<LeanTb1v<F>, Error> {
-    let p = lean_preload(
-        mass,
-        stiffness,
-        preload_force,
-        closing_speed,
-        restitution,
-        damping_ratio,
-    )?;
+fn lean_tb1v<F: Float>(switch: &Preloaded<F>) -> Result<LeanTb1v<F>, Error> {
+    let p = lean_preload(switch)?;
     let time = log_growth_of_ratio(p.j0, p.loss, p.zeta * F::from_f64(2.0 / 3.0)) * p.inverse_omega;
     Ok(LeanTb1v {
         time: normal(time, Parameter::PreloadForce).map(|()| time)?,

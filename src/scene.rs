@@ -187,21 +187,16 @@ pub(crate) struct LeanPreload<F> {
 }
 
 /// The lean paths' checks, in [`Scene::new`]'s order and with its errors, and their common
-/// arithmetic (a restitution-only path passes zeta 0).
+/// arithmetic.
 #[inline]
 pub(crate) fn lean_preload<F: Float>(
-    mass: F,
-    stiffness: F,
-    preload_force: F,
-    closing_speed: F,
-    restitution: F,
-    damping_ratio: F,
+    switch: &crate::Preloaded<F>,
 ) -> Result<LeanPreload<F>, Error> {
-    let mass = physical(mass, Parameter::Mass)?;
-    let stiffness = physical(stiffness, Parameter::Stiffness)?;
-    let force = physical(preload_force, Parameter::PreloadForce)?;
-    let speed = physical(closing_speed, Parameter::ClosingSpeed)?;
-    let restitution = finite(restitution, Parameter::Restitution)?;
+    let mass = physical(switch.mass, Parameter::Mass)?;
+    let stiffness = physical(switch.stiffness, Parameter::Stiffness)?;
+    let force = physical(switch.preload_force, Parameter::PreloadForce)?;
+    let speed = physical(switch.closing_speed, Parameter::ClosingSpeed)?;
+    let restitution = finite(switch.restitution, Parameter::Restitution)?;
     let loss = F::ONE - restitution;
     // (R above 1 leaves a negative loss.)
     if !restitution.within_positive(F::from_f64(SMALLEST_RESTITUTION), F::ONE)
@@ -210,7 +205,7 @@ pub(crate) fn lean_preload<F: Float>(
         return Err(Error::new(Parameter::Restitution, Reason::OutOfRange));
     }
     // Damped within the domain (one integer comparison of the bits), or undamped.
-    let zeta = damping_ratio;
+    let zeta = switch.damping_ratio;
     let damped = zeta.within_positive(F::from_f64(SMALLEST_RATE), F::from_f64(LARGEST_DAMPING));
     if !damped && zeta != F::ZERO {
         non_negative(zeta, Parameter::DampingRatio)?;

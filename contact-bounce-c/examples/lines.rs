@@ -5,8 +5,8 @@
 use contact_bounce::{
     tiers::preload_restitution_bounce_seconds, tiers::preload_viscous_bounce_time,
     tiers::AutoTiers, tiers::DEFAULT_MAX_IMPACTS, tiers::EXACT_MAX_IMPACTS, Contact, Edge, Error,
-    Frequency, Margin, Method, Mode, Nodes, Offset, Parameter, Prediction, Reason, Restitution,
-    Scene, State, Threshold, Tolerance, Viscous, Window, Windows,
+    Frequency, Margin, Method, Mode, Nodes, Offset, Parameter, Prediction, Preloaded, Reason,
+    Restitution, Scene, State, Threshold, Tolerance, Viscous, Window, Windows,
 };
 
 /// mass, stiffness, offset, R, zeta, closing speed, threshold fraction (0: none).
@@ -75,10 +75,21 @@ fn time_line(index: usize, tier: &str, time: Result<f32, Error>) -> String {
 fn main() -> Result<(), Error> {
     for (i, s) in SWITCHES.into_iter().enumerate() {
         let [mass, stiffness, offset, r, zeta, v0, _] = s;
-        let force = -offset * stiffness;
-        let tb1v = preload_viscous_bounce_time(mass, stiffness, force, v0, r, zeta).map(|e| e.time);
+        let lean = Preloaded {
+            mass,
+            stiffness,
+            preload_force: -offset * stiffness,
+            closing_speed: v0,
+            restitution: r,
+            damping_ratio: zeta,
+        };
+        let tb1v = preload_viscous_bounce_time(&lean).map(|e| e.time);
         println!("{}", time_line(i, "tb1v", tb1v));
-        let averaged = preload_restitution_bounce_seconds(mass, stiffness, force, v0, r);
+        // Restitution alone: the switch's damping left out.
+        let averaged = preload_restitution_bounce_seconds(&Preloaded {
+            damping_ratio: 0.0,
+            ..lean
+        });
         println!("{}", time_line(i, "restitution-averaged", averaged));
         // The closed tier's time on a preloaded switch (`cb_preload_seconds_closed`).
         let closed_preload = contact(s).and_then(|(contact, damping)| {

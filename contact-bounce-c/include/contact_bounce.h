@@ -11,6 +11,12 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+// The API's version, raised when a signature changes. 2: the lean preload paths take a
+// `cb_preloaded` (the Rust crate's `Preloaded`, in its order) under the Rust crate's names
+// (`cb_preload_viscous_bounce_time`, `cb_preload_viscous_bounce_seconds`,
+// `cb_preload_restitution_bounce_seconds`); version 1 took six loose floats in another order.
+#define CB_API_VERSION 2
+
 // One key's learning debouncer: 24 bytes, aligned as a uint16_t. Set it with `cb_learner_init`
 // or `cb_learner_restore`.
 typedef struct cb_learner {
@@ -141,7 +147,7 @@ enum cb_parameter
   CB_PARAM_TIME,
   // The debouncer's mode.
   CB_PARAM_MODE,
-  // The preload force of `cb_preload_bounce_time`.
+  // The preload force of `cb_preload_viscous_bounce_time`.
   CB_PARAM_PRELOAD_FORCE,
   // A parameter this header does not know (a newer core).
   CB_PARAM_OTHER,
@@ -276,6 +282,26 @@ typedef struct cb_prediction {
   uint8_t flags;
 } cb_prediction;
 
+// A preloaded switch for the lean paths, in SI units: the six numbers of the Rust crate's
+// `Preloaded`, in its order (mass, stiffness, preload force, closing speed, restitution,
+// damping ratio). Fill it by name (`.closing_speed = 0.5f`): the lean functions took six
+// loose floats before, in another order than Rust's, where a swap compiled and gave a wrong
+// time.
+typedef struct cb_preloaded {
+  // Effective (moving) mass, kg (> 0).
+  float mass;
+  // Effective stiffness of the contact spring, N/m (> 0).
+  float stiffness;
+  // Contact (preload) force at rest, N (> 0).
+  float preload_force;
+  // Closing speed at the first impact, m/s (> 0).
+  float closing_speed;
+  // Coefficient of restitution R, in (0, 1).
+  float restitution;
+  // Viscous damping ratio zeta (>= 0; 0 for none).
+  float damping_ratio;
+} cb_preloaded;
+
 // A closed-form estimate: the time and the relative error to expect of it.
 typedef struct cb_estimate {
   // The bounce time, s.
@@ -397,7 +423,7 @@ cb_error cb_window_ticks(const struct cb_prediction *prediction,
                          float sample_period,
                          uint32_t *ticks);
 
-// The window covering `seconds` of bounce, as `cb_window_ticks` (for `cb_preload_bounce_time`).
+// The window covering `seconds` of bounce, as `cb_window_ticks` (for `cb_preload_viscous_bounce_time`).
 cb_error cb_seconds_to_ticks(float seconds,
                              float margin_factor,
                              float margin_extra,
@@ -407,39 +433,24 @@ cb_error cb_seconds_to_ticks(float seconds,
 // The lean path: a preloaded contact's bounce time `t_b1v` (restitution and viscous damping;
 // `damping_ratio` 0 gives `t_b1`) straight from its inputs, with no scene and no tier: the
 // smallest firmware (about 4 KB of the Uno's flash from C, a tier through this API 17 KB and
-// more: `docs/c-api-uno.md`). Expected error
-// within 2.5 % plus the arctangent linearisation for a small first impulse; the estimate says
-// when the inputs are beyond that. `preload_force` in N (> 0).
-cb_error cb_preload_bounce_time(float mass,
-                                float stiffness,
-                                float preload_force,
-                                float restitution,
-                                float damping_ratio,
-                                float closing_speed,
-                                struct cb_estimate *out);
+// more: `docs/c-api-uno.md`). Expected error within 2.5 % plus the arctangent linearisation
+// for a small first impulse; the estimate says when the inputs are beyond that. Rust's
+// `tiers::preload_viscous_bounce_time`.
+cb_error cb_preload_viscous_bounce_time(const struct cb_preloaded *sw, struct cb_estimate *out);
 
-// The lean path's time alone: `t_b1v` (s) as `cb_preload_bounce_time` computes it (the same
-// value, the same errors), without its expected error, into `seconds`: for firmware that sets its
-// margin itself (`cb_seconds_to_ticks`). `preload_force` in N (> 0).
-cb_error cb_preload_bounce_seconds(float mass,
-                                   float stiffness,
-                                   float preload_force,
-                                   float restitution,
-                                   float damping_ratio,
-                                   float closing_speed,
-                                   float *seconds);
+// The lean path's time alone: `t_b1v` (s) as `cb_preload_viscous_bounce_time` computes it (the
+// same value, the same errors), without its expected error, into `seconds`: for firmware that
+// sets its margin itself (`cb_seconds_to_ticks`). Rust's
+// `tiers::preload_viscous_bounce_seconds`.
+cb_error cb_preload_viscous_bounce_seconds(const struct cb_preloaded *sw, float *seconds);
 
 // The lean averaged path: a preloaded contact's bounce (s) under restitution alone, the averaged
 // model's time in closed form, straight from its inputs, with no scene and no expected error,
 // into `seconds` (for a first impulse up to the preload's scale, j0 <= 1, long by at most 4.7 %
-// at R = 0.05 and 1.7 % from R = 0.5; the averaged tier's expected error needs a scene).
-// `preload_force` in N (> 0).
-cb_error cb_preload_restitution_seconds(float mass,
-                                        float stiffness,
-                                        float preload_force,
-                                        float restitution,
-                                        float closing_speed,
-                                        float *seconds);
+// at R = 0.05 and 1.7 % from R = 0.5; the averaged tier's expected error needs a scene). Its
+// `damping_ratio` must be 0 (`CB_PARAM_DAMPING_RATIO` / `CB_ERR_OUT_OF_RANGE` otherwise: the
+// path has no damping). Rust's `tiers::preload_restitution_bounce_seconds`.
+cb_error cb_preload_restitution_bounce_seconds(const struct cb_preloaded *sw, float *seconds);
 
 // Fills `out` with windows of `press` and `release` samples (each at most
 // `CB_MAX_WINDOW_TICKS`, else `CB_PARAM_TIME` out of range).

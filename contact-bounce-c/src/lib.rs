@@ -33,8 +33,8 @@ use contact_bounce::{
     tiers::DEFAULT_MAX_IMPACTS,
     tiers::EXACT_MAX_IMPACTS,
     Contact, Edge, Error, Frequency, LearnerPrior, LearningState, Margin, Method, Mode, Nodes,
-    Offset, Parameter, Prediction, Reason, Restitution, Scene, State, Threshold, Tolerance,
-    Viscous, Window, Windows,
+    Offset, Parameter, Prediction, Preloaded, Reason, Restitution, Scene, State, Threshold,
+    Tolerance, Viscous, Window, Windows,
 };
 
 /// A panic cannot happen (the core and this crate have no panicking path); on a bare-metal
@@ -102,7 +102,7 @@ pub enum cb_parameter {
     CB_PARAM_TIME,
     /// The debouncer's mode.
     CB_PARAM_MODE,
-    /// The preload force of `cb_preload_bounce_time`.
+    /// The preload force of `cb_preload_viscous_bounce_time`.
     CB_PARAM_PRELOAD_FORCE,
     /// A parameter this header does not know (a newer core).
     CB_PARAM_OTHER,
@@ -712,7 +712,7 @@ pub extern "C" fn cb_window_ticks(
     ticks_for(bounce, margin_factor, margin_extra, sample_period, ticks)
 }
 
-/// The window covering `seconds` of bounce, as `cb_window_ticks` (for `cb_preload_bounce_time`).
+/// The window covering `seconds` of bounce, as `cb_window_ticks` (for `cb_preload_viscous_bounce_time`).
 #[allow(unsafe_code)]
 #[no_mangle]
 pub extern "C" fn cb_seconds_to_ticks(
@@ -746,34 +746,58 @@ pub struct cb_estimate {
     pub has_expected_error: u8,
 }
 
+/// A preloaded switch for the lean paths, in SI units: the six numbers of the Rust crate's
+/// `Preloaded`, in its order (mass, stiffness, preload force, closing speed, restitution,
+/// damping ratio). Fill it by name (`.closing_speed = 0.5f`): the lean functions took six
+/// loose floats before, in another order than Rust's, where a swap compiled and gave a wrong
+/// time.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct cb_preloaded {
+    /// Effective (moving) mass, kg (> 0).
+    pub mass: f32,
+    /// Effective stiffness of the contact spring, N/m (> 0).
+    pub stiffness: f32,
+    /// Contact (preload) force at rest, N (> 0).
+    pub preload_force: f32,
+    /// Closing speed at the first impact, m/s (> 0).
+    pub closing_speed: f32,
+    /// Coefficient of restitution R, in (0, 1).
+    pub restitution: f32,
+    /// Viscous damping ratio zeta (>= 0; 0 for none).
+    pub damping_ratio: f32,
+}
+
+impl From<&cb_preloaded> for Preloaded<f32> {
+    #[inline]
+    fn from(p: &cb_preloaded) -> Self {
+        Preloaded {
+            mass: p.mass,
+            stiffness: p.stiffness,
+            preload_force: p.preload_force,
+            closing_speed: p.closing_speed,
+            restitution: p.restitution,
+            damping_ratio: p.damping_ratio,
+        }
+    }
+}
+
 /// The lean path: a preloaded contact's bounce time `t_b1v` (restitution and viscous damping;
 /// `damping_ratio` 0 gives `t_b1`) straight from its inputs, with no scene and no tier: the
 /// smallest firmware (about 4 KB of the Uno's flash from C, a tier through this API 17 KB and
-/// more: `docs/c-api-uno.md`). Expected error
-/// within 2.5 % plus the arctangent linearisation for a small first impulse; the estimate says
-/// when the inputs are beyond that. `preload_force` in N (> 0).
+/// more: `docs/c-api-uno.md`). Expected error within 2.5 % plus the arctangent linearisation
+/// for a small first impulse; the estimate says when the inputs are beyond that. Rust's
+/// `tiers::preload_viscous_bounce_time`.
 #[allow(unsafe_code)]
 #[no_mangle]
-pub extern "C" fn cb_preload_bounce_time(
-    mass: f32,
-    stiffness: f32,
-    preload_force: f32,
-    restitution: f32,
-    damping_ratio: f32,
-    closing_speed: f32,
+pub extern "C" fn cb_preload_viscous_bounce_time(
+    sw: Option<&cb_preloaded>,
     out: Option<&mut cb_estimate>,
 ) -> cb_error {
-    let Some(out) = out else {
+    let (Some(sw), Some(out)) = (sw, out) else {
         return NULL;
     };
-    match preload_viscous_bounce_time(
-        mass,
-        stiffness,
-        preload_force,
-        closing_speed,
-        restitution,
-        damping_ratio,
-    ) {
+    match preload_viscous_bounce_time(&sw.into()) {
         Ok(e) => {
             *out = cb_estimate {
                 time: e.time,
@@ -786,30 +810,20 @@ pub extern "C" fn cb_preload_bounce_time(
     }
 }
 
-/// The lean path's time alone: `t_b1v` (s) as `cb_preload_bounce_time` computes it (the same
-/// value, the same errors), without its expected error, into `seconds`: for firmware that sets its
-/// margin itself (`cb_seconds_to_ticks`). `preload_force` in N (> 0).
+/// The lean path's time alone: `t_b1v` (s) as `cb_preload_viscous_bounce_time` computes it (the
+/// same value, the same errors), without its expected error, into `seconds`: for firmware that
+/// sets its margin itself (`cb_seconds_to_ticks`). Rust's
+/// `tiers::preload_viscous_bounce_seconds`.
 #[allow(unsafe_code)]
 #[no_mangle]
-pub extern "C" fn cb_preload_bounce_seconds(
-    mass: f32,
-    stiffness: f32,
-    preload_force: f32,
-    restitution: f32,
-    damping_ratio: f32,
-    closing_speed: f32,
+pub extern "C" fn cb_preload_viscous_bounce_seconds(
+    sw: Option<&cb_preloaded>,
     seconds: Option<&mut f32>,
 ) -> cb_error {
-    seconds_into(seconds, || {
-        preload_viscous_bounce_seconds(
-            mass,
-            stiffness,
-            preload_force,
-            closing_speed,
-            restitution,
-            damping_ratio,
-        )
-    })
+    let Some(sw) = sw else {
+        return NULL;
+    };
+    seconds_into(seconds, || preload_viscous_bounce_seconds(&sw.into()))
 }
 
 /// A lean path's time into `out` (NULL: an error, and nothing computed).
@@ -829,27 +843,19 @@ fn seconds_into(out: Option<&mut f32>, time: impl FnOnce() -> Result<f32, Error>
 /// The lean averaged path: a preloaded contact's bounce (s) under restitution alone, the averaged
 /// model's time in closed form, straight from its inputs, with no scene and no expected error,
 /// into `seconds` (for a first impulse up to the preload's scale, j0 <= 1, long by at most 4.7 %
-/// at R = 0.05 and 1.7 % from R = 0.5; the averaged tier's expected error needs a scene).
-/// `preload_force` in N (> 0).
+/// at R = 0.05 and 1.7 % from R = 0.5; the averaged tier's expected error needs a scene). Its
+/// `damping_ratio` must be 0 (`CB_PARAM_DAMPING_RATIO` / `CB_ERR_OUT_OF_RANGE` otherwise: the
+/// path has no damping). Rust's `tiers::preload_restitution_bounce_seconds`.
 #[allow(unsafe_code)]
 #[no_mangle]
-pub extern "C" fn cb_preload_restitution_seconds(
-    mass: f32,
-    stiffness: f32,
-    preload_force: f32,
-    restitution: f32,
-    closing_speed: f32,
+pub extern "C" fn cb_preload_restitution_bounce_seconds(
+    sw: Option<&cb_preloaded>,
     seconds: Option<&mut f32>,
 ) -> cb_error {
-    seconds_into(seconds, || {
-        preload_restitution_bounce_seconds(
-            mass,
-            stiffness,
-            preload_force,
-            closing_speed,
-            restitution,
-        )
-    })
+    let Some(sw) = sw else {
+        return NULL;
+    };
+    seconds_into(seconds, || preload_restitution_bounce_seconds(&sw.into()))
 }
 
 /// How a debounce window is used.

@@ -10,10 +10,10 @@ use contact_bounce_c::{
     cb_bounce_seconds_map, cb_code, cb_error, cb_estimate, cb_parameter, cb_parameter_name, cb_pin,
     cb_pin_init, cb_pin_is_closed, cb_pin_update, cb_predict_auto, cb_predict_auto_exact,
     cb_predict_averaged, cb_predict_closed, cb_predict_exact, cb_predict_map, cb_prediction,
-    cb_preload_bounce_seconds, cb_preload_bounce_time, cb_preload_restitution_seconds,
-    cb_preload_seconds_averaged, cb_preload_seconds_closed, cb_preload_seconds_exact,
-    cb_preload_seconds_map, cb_seconds_to_ticks, cb_switch, cb_switch_check, cb_window_ticks,
-    cb_windows, cb_windows_init, CB_HAS_COUNT, CB_HAS_END, CB_HAS_EXPECTED_ERROR,
+    cb_preload_restitution_bounce_seconds, cb_preload_seconds_averaged, cb_preload_seconds_closed,
+    cb_preload_seconds_exact, cb_preload_seconds_map, cb_preload_viscous_bounce_seconds,
+    cb_preload_viscous_bounce_time, cb_preloaded, cb_seconds_to_ticks, cb_switch, cb_switch_check,
+    cb_window_ticks, cb_windows, cb_windows_init, CB_HAS_COUNT, CB_HAS_END, CB_HAS_EXPECTED_ERROR,
     CB_HAS_LAST_ABOVE,
 };
 use contact_bounce_c::{
@@ -259,13 +259,16 @@ fn raw_inputs_to_the_c_api_get_error_codes_or_sound_answers() {
             expected_error: 0.0,
             has_expected_error: 0,
         };
-        let e = cb_preload_bounce_time(
-            sw.mass,
-            sw.stiffness,
-            rng.value(),
-            sw.restitution,
-            sw.damping_ratio,
-            sw.closing_speed,
+        let lean = |force: f32, damping_ratio: f32| cb_preloaded {
+            mass: sw.mass,
+            stiffness: sw.stiffness,
+            preload_force: force,
+            closing_speed: sw.closing_speed,
+            restitution: sw.restitution,
+            damping_ratio,
+        };
+        let e = cb_preload_viscous_bounce_time(
+            Some(&lean(rng.value(), sw.damping_ratio)),
             Some(&mut est),
         );
         if e.code() == 0
@@ -279,37 +282,28 @@ fn raw_inputs_to_the_c_api_get_error_codes_or_sound_answers() {
         // number wherever it answers.
         let force = rng.value();
         let (mut alone, mut averaged) = (-1.0_f32, -1.0_f32);
-        let seconds = cb_preload_bounce_seconds(
-            sw.mass,
-            sw.stiffness,
-            force,
-            sw.restitution,
-            sw.damping_ratio,
-            sw.closing_speed,
+        let seconds = cb_preload_viscous_bounce_seconds(
+            Some(&lean(force, sw.damping_ratio)),
             Some(&mut alone),
         );
-        let e = cb_preload_bounce_time(
-            sw.mass,
-            sw.stiffness,
-            force,
-            sw.restitution,
-            sw.damping_ratio,
-            sw.closing_speed,
-            Some(&mut est),
-        );
+        let e =
+            cb_preload_viscous_bounce_time(Some(&lean(force, sw.damping_ratio)), Some(&mut est));
         if seconds != e || (e.code() == 0 && alone.to_bits() != est.time.to_bits()) {
             faults.push(format!(
                 "tb1v seconds: {seconds:?} {alone} against {e:?} {est:?} for {sw:?}"
             ));
         }
-        let e = cb_preload_restitution_seconds(
-            sw.mass,
-            sw.stiffness,
-            force,
-            sw.restitution,
-            sw.closing_speed,
+        // (With the switch's damping ratio, which the path refuses unless it is 0.)
+        let e = cb_preload_restitution_bounce_seconds(
+            Some(&lean(force, sw.damping_ratio)),
             Some(&mut averaged),
         );
+        if sw.damping_ratio != 0.0 && e.code() == 0 {
+            faults.push(format!(
+                "restitution seconds: a damping ratio it leaves out accepted, for {sw:?}"
+            ));
+        }
+        let e = cb_preload_restitution_bounce_seconds(Some(&lean(force, 0.0)), Some(&mut averaged));
         if e.code() == 0 && !(averaged.is_finite() && averaged >= 0.0) {
             faults.push(format!(
                 "restitution seconds: a NaN, infinite or negative time {averaged} for {sw:?}"

@@ -940,12 +940,26 @@ fn raw_inputs<F: Float + std::fmt::Debug>(
         };
         let what = format!("{contact:?} zeta {z:?} kappa {kappa:?} tau {tau:?} tol {tol:?}");
         // The free functions and small constructors.
-        if let Ok(t) = preload_viscous_bounce_time(a, b, c, e, d, z) {
+        if let Ok(t) = preload_viscous_bounce_time(&contact_bounce::Preloaded {
+            mass: a,
+            stiffness: b,
+            preload_force: c,
+            closing_speed: e,
+            restitution: d,
+            damping_ratio: z,
+        }) {
             if !number(t.time) || t.expected_error.is_some_and(|x| !number(x)) {
                 faults.push(format!("preload_viscous_bounce_time {t:?}, {what}"));
             }
         }
-        if let Ok(t) = preload_restitution_bounce_seconds(a, b, c, e, d) {
+        if let Ok(t) = preload_restitution_bounce_seconds(&contact_bounce::Preloaded {
+            mass: a,
+            stiffness: b,
+            preload_force: c,
+            closing_speed: e,
+            restitution: d,
+            damping_ratio: F::ZERO,
+        }) {
             if !number(t) {
                 faults.push(format!("preload_restitution_bounce_seconds {t:?}, {what}"));
             }

@@ -72,23 +72,67 @@ static void bad_inputs(void) {
     p.flags = 0;
     expect(cb_window_ticks(&p, 1.5f, 0.0f, 1e-5f, &ticks), CB_ERR_ENDLESS, CB_PARAM_TIME, "endless window");
 
+    /* The lean paths take the switch by name, in the Rust crate's order. */
+    const cb_preloaded lean = {.mass = 5e-5f, .stiffness = 5000.0f, .preload_force = 1.0f,
+                               .closing_speed = 0.5f, .restitution = 0.7f, .damping_ratio = 0.03f};
+    cb_preloaded bad_lean = lean;
     cb_estimate est;
-    expect(cb_preload_bounce_time(5e-5f, 5000.0f, 1.0f, 0.7f, 0.03f, 0.5f, NULL), CB_ERR_NULL, CB_PARAM_POINTER, "NULL estimate");
-    expect(cb_preload_bounce_time(5e-5f, 5000.0f, -1.0f, 0.7f, 0.03f, 0.5f, &est), CB_ERR_NOT_POSITIVE, CB_PARAM_PRELOAD_FORCE, "negative preload force");
-    expect(cb_preload_bounce_time(5e-5f, 5000.0f, 1.0f, NAN, 0.03f, 0.5f, &est), CB_ERR_NAN, CB_PARAM_RESTITUTION, "NaN R, lean path");
+    expect(cb_preload_viscous_bounce_time(&lean, NULL), CB_ERR_NULL, CB_PARAM_POINTER, "NULL estimate");
+    expect(cb_preload_viscous_bounce_time(NULL, &est), CB_ERR_NULL, CB_PARAM_POINTER, "NULL lean switch");
+    bad_lean.preload_force = -1.0f;
+    expect(cb_preload_viscous_bounce_time(&bad_lean, &est), CB_ERR_NOT_POSITIVE, CB_PARAM_PRELOAD_FORCE, "negative preload force");
+    bad_lean = lean;
+    bad_lean.restitution = NAN;
+    expect(cb_preload_viscous_bounce_time(&bad_lean, &est), CB_ERR_NAN, CB_PARAM_RESTITUTION, "NaN R, lean path");
     float seconds = -1.0f;
-    expect(cb_preload_bounce_seconds(5e-5f, 5000.0f, 1.0f, 0.7f, 0.03f, 0.5f, NULL), CB_ERR_NULL, CB_PARAM_POINTER, "NULL seconds, lean path");
-    expect(cb_preload_bounce_seconds(5e-5f, 5000.0f, 1.0f, 0.7f, -0.1f, 0.5f, &seconds), CB_ERR_NEGATIVE, CB_PARAM_DAMPING_RATIO, "negative zeta, lean path");
-    expect(cb_preload_bounce_seconds(5e-5f, 5000.0f, 1.0f, 0.7f, 0.03f, 0.5f, &seconds), CB_OK, CB_PARAM_NONE, "the lean time alone");
-    expect(cb_preload_bounce_time(5e-5f, 5000.0f, 1.0f, 0.7f, 0.03f, 0.5f, &est), CB_OK, CB_PARAM_NONE, "the lean estimate");
+    expect(cb_preload_viscous_bounce_seconds(&lean, NULL), CB_ERR_NULL, CB_PARAM_POINTER, "NULL seconds, lean path");
+    bad_lean = lean;
+    bad_lean.damping_ratio = -0.1f;
+    expect(cb_preload_viscous_bounce_seconds(&bad_lean, &seconds), CB_ERR_NEGATIVE, CB_PARAM_DAMPING_RATIO, "negative zeta, lean path");
+    expect(cb_preload_viscous_bounce_seconds(&lean, &seconds), CB_OK, CB_PARAM_NONE, "the lean time alone");
+    expect(cb_preload_viscous_bounce_time(&lean, &est), CB_OK, CB_PARAM_NONE, "the lean estimate");
     if (seconds != est.time) {
         fprintf(stderr, "FAIL the lean time alone %g is not the estimate's %g\n", (double)seconds, (double)est.time);
         failures++;
     }
-    expect(cb_preload_restitution_seconds(5e-5f, 5000.0f, 1.0f, 0.7f, 0.5f, NULL), CB_ERR_NULL, CB_PARAM_POINTER, "NULL seconds, averaged lean path");
-    expect(cb_preload_restitution_seconds(5e-5f, 5000.0f, 1.0f, NAN, 0.5f, &seconds), CB_ERR_NAN, CB_PARAM_RESTITUTION, "NaN R, averaged lean path");
-    expect(cb_preload_restitution_seconds(5e-5f, 5000.0f, 1.0f, 1.0f, 0.5f, &seconds), CB_ERR_OUT_OF_RANGE, CB_PARAM_RESTITUTION, "R = 1, averaged lean path");
-    expect(cb_preload_restitution_seconds(0.0f, 5000.0f, 1.0f, 0.7f, 0.5f, &seconds), CB_ERR_NOT_POSITIVE, CB_PARAM_MASS, "zero mass, averaged lean path");
+    /* Each input where its name says: t_b1v from the formula, in double, with the dome's
+     * distinct numbers, to 1e-5. Closing speed and restitution swapped (0.7 m/s, R = 0.5) the
+     * time is 40 % off; every other swap of two inputs is refused or moves it by 1.2 % (mass
+     * with closing speed) or more. */
+    {
+        const double omega = sqrt(5000.0 / 5e-5), depth = 1.0 / 5000.0, zeta = 0.03;
+        const double impulse = 2.0 * 0.7 * 0.5, loss = 1.0 - 0.7;
+        const double want = 3.0 / (2.0 * zeta * omega) * log1p(2.0 * zeta * impulse / (3.0 * loss * omega * depth));
+        if (fabs(est.time / want - 1.0) > 1e-5) {
+            fprintf(stderr, "FAIL the lean t_b1v %g is not the formula's %g: an input in the wrong place?\n",
+                    (double)est.time, want);
+            failures++;
+        }
+        bad_lean = lean;
+        bad_lean.closing_speed = 0.7f;
+        bad_lean.restitution = 0.5f;
+        cb_estimate swapped;
+        expect(cb_preload_viscous_bounce_time(&bad_lean, &swapped), CB_OK, CB_PARAM_NONE, "the swapped inputs");
+        if (fabs(swapped.time / want - 1.0) < 0.3) {
+            fprintf(stderr, "FAIL a swap of closing speed and restitution moves t_b1v by only %g\n",
+                    swapped.time / want - 1.0);
+            failures++;
+        }
+    }
+    const cb_preloaded undamped = {.mass = 5e-5f, .stiffness = 5000.0f, .preload_force = 1.0f,
+                                   .closing_speed = 0.5f, .restitution = 0.7f, .damping_ratio = 0.0f};
+    expect(cb_preload_restitution_bounce_seconds(&undamped, NULL), CB_ERR_NULL, CB_PARAM_POINTER, "NULL seconds, averaged lean path");
+    expect(cb_preload_restitution_bounce_seconds(NULL, &seconds), CB_ERR_NULL, CB_PARAM_POINTER, "NULL switch, averaged lean path");
+    expect(cb_preload_restitution_bounce_seconds(&lean, &seconds), CB_ERR_OUT_OF_RANGE, CB_PARAM_DAMPING_RATIO, "damping on the restitution path");
+    bad_lean = undamped;
+    bad_lean.restitution = NAN;
+    expect(cb_preload_restitution_bounce_seconds(&bad_lean, &seconds), CB_ERR_NAN, CB_PARAM_RESTITUTION, "NaN R, averaged lean path");
+    bad_lean.restitution = 1.0f;
+    expect(cb_preload_restitution_bounce_seconds(&bad_lean, &seconds), CB_ERR_OUT_OF_RANGE, CB_PARAM_RESTITUTION, "R = 1, averaged lean path");
+    bad_lean = undamped;
+    bad_lean.mass = 0.0f;
+    expect(cb_preload_restitution_bounce_seconds(&bad_lean, &seconds), CB_ERR_NOT_POSITIVE, CB_PARAM_MASS, "zero mass, averaged lean path");
+    expect(cb_preload_restitution_bounce_seconds(&undamped, &seconds), CB_OK, CB_PARAM_NONE, "the averaged lean time");
     expect(cb_seconds_to_ticks(-1.0f, 1.5f, 0.0f, 1e-5f, &ticks), CB_ERR_NEGATIVE, CB_PARAM_TIME, "negative seconds");
     expect(cb_seconds_to_ticks(1e-3f, 1.5f, 0.0f, 1e-5f, NULL), CB_ERR_NULL, CB_PARAM_POINTER, "NULL ticks, seconds");
 

@@ -58,9 +58,14 @@ static inline void prediction_line(put_line put, uint32_t index, const char *tie
  * force). */
 static inline void tb1v_line(put_line put, uint32_t index) {
     const cb_switch *s = &SWITCHES[index];
+    const cb_preloaded lean = {.mass = s->mass,
+                               .stiffness = s->stiffness,
+                               .preload_force = -s->offset * s->stiffness,
+                               .closing_speed = s->closing_speed,
+                               .restitution = s->restitution,
+                               .damping_ratio = s->damping_ratio};
     cb_estimate e;
-    cb_error r = cb_preload_bounce_time(s->mass, s->stiffness, -s->offset * s->stiffness,
-                                        s->restitution, s->damping_ratio, s->closing_speed, &e);
+    cb_error r = cb_preload_viscous_bounce_time(&lean, &e);
     if (r != CB_OK) {
         cb_prediction none = {0};
         prediction_line(put, index, "tb1v", r, &none);
@@ -84,9 +89,14 @@ static inline void tb1v_line(put_line put, uint32_t index) {
  * -offset * stiffness: "switch S restitution-averaged end_ns N ticks K" (or the error). */
 static inline void restitution_line(put_line put, uint32_t index) {
     const cb_switch *s = &SWITCHES[index];
+    const cb_preloaded lean = {.mass = s->mass,
+                               .stiffness = s->stiffness,
+                               .preload_force = -s->offset * s->stiffness,
+                               .closing_speed = s->closing_speed,
+                               .restitution = s->restitution,
+                               .damping_ratio = 0.0f};
     float seconds = 0.0f;
-    cb_error r = cb_preload_restitution_seconds(s->mass, s->stiffness, -s->offset * s->stiffness,
-                                                s->restitution, s->closing_speed, &seconds);
+    cb_error r = cb_preload_restitution_bounce_seconds(&lean, &seconds);
     cb_prediction p = {0};
     if (r == CB_OK) {
         p.end_time = seconds;

@@ -20,9 +20,16 @@ void setup() {
   pinMode(CONTACT_PIN, INPUT_PULLUP);
   Serial.begin(115200);
   // A tactile dome: 50 mg moving mass on 5000 N/m, 1 N preload, R 0.7, zeta 0.03, 0.5 m/s.
+  cb_preloaded dome;
+  dome.mass = 5e-5f;
+  dome.stiffness = 5000.0f;
+  dome.preload_force = 1.0f;
+  dome.closing_speed = 0.5f;
+  dome.restitution = 0.7f;
+  dome.damping_ratio = 0.03f;
   cb_estimate bounce;
   uint32_t ticks = 0;
-  if (cb_preload_bounce_time(5e-5f, 5000.0f, 1.0f, 0.7f, 0.03f, 0.5f, &bounce) != CB_OK ||
+  if (cb_preload_viscous_bounce_time(&dome, &bounce) != CB_OK ||
       cb_seconds_to_ticks(bounce.time, 1.5f, 0.0f, PERIOD_US * 1e-6f, &ticks) != CB_OK ||
       cb_windows_init(&windows, ticks, ticks, CB_MODE_HOLD_OFF) != CB_OK ||
       cb_pin_init(&contact, digitalRead(CONTACT_PIN) == LOW) != CB_OK) {
