@@ -73,7 +73,7 @@ for (sw, regime), g in groups.items():
 print()
 print("Every switch and regime: " + ("the learner loses no tap, no row has both fewer missed taps and fewer false edges, and on the rocker and the control it has no false edge." if ok else "NOT every learned row holds (see the last column)."))
 ')
-# The push button in the README: the learner against the windows people use.
+# The push button in docs/guide-firmware.md: the learner against the windows people use.
 tapreadme=$(run --taps --window 157e-3 --format json | python3 -c '
 import json, sys
 rows = [json.loads(l) for l in sys.stdin]
@@ -219,7 +219,7 @@ for typing / fast taps / double-clicks / holds):
 $sweep
 
 The push button against the windows people use (missed taps / false edges, of 1,000 taps; the
-README's table):
+table of \`docs/guide-firmware.md\`):
 
 $tapreadme
 

@@ -78,13 +78,13 @@ for target in "${targets[@]}"; do
 done
 cargo +"$msrv" test -p contact-bounce --target-dir target/msrv 2>&1 | tee -a "$log"
 
-step "firmware size report (fails if restitution-only firmware links a sine; README and docs/size-report.md current)"
+step "firmware size report (fails if restitution-only firmware links a sine; docs/guide-firmware.md and docs/size-report.md current)"
 sizes=$(scripts/size-report.sh)
 echo "$sizes"
 python3 - "$sizes" <<'PY'
 import sys
 rows = [l for l in sys.argv[1].splitlines() if l.startswith("| thumb")]
-for path in ("README.md", "docs/size-report.md"):
+for path in ("docs/guide-firmware.md", "docs/size-report.md"):
     text = open(path).read()
     missing = [r for r in rows if r not in text]
     if missing or not rows:
@@ -176,7 +176,7 @@ python3 scripts/gauss_legendre.py | rustfmt --edition 2021 | diff - src/quadratu
 python3 scripts/averaged_error_table.py | rustfmt --edition 2021 | diff - src/accuracy/zeno_table.rs
 python3 scripts/flight_series.py | rustfmt --edition 2021 | diff - src/exact/flight_series.rs
 
-step "measured tables are current (docs/ and README regenerate identically)"
+step "measured tables are current (docs/ regenerates identically)"
 cargo run --quiet --release -p host-tests --bin error-table | diff - docs/error-table.md
 cargo run --quiet --release -p host-tests --bin debounce-report | diff - docs/debounce-comparison.md
 cargo run --quiet --release -p host-tests --bin trace-data | rustfmt --edition 2021 | diff - examples/data/relay_press.rs
@@ -184,12 +184,12 @@ table=$(scripts/eval-catalogue.sh)
 python3 - "$table" <<'PY'
 import sys
 table = sys.argv[1].strip()
-for path in ("README.md", "docs/eval-catalogue.md"):
+for path in ("docs/guide-tiers.md", "docs/eval-catalogue.md"):
     if table not in open(path).read():
         sys.exit(f"{path}: the eval table differs from scripts/eval-catalogue.sh's output")
 PY
 
-step "docs/calibration.md, docs/replay.md, their plots and the README's replay table are current, and the keyboard matrix typed on the real switches (need the shared capture, ../shared/data)"
+step "docs/calibration.md, docs/replay.md, their plots and the guides' replay and tap tables are current, and the keyboard matrix typed on the real switches (need the shared capture, ../shared/data)"
 if [ -f ../shared/data/bouncy-button-uno.jsonl ]; then
   scripts/calibration-report.sh | diff - docs/calibration.md
   replay=$(scripts/replay-report.sh)
@@ -209,10 +209,10 @@ import sys
 doc = sys.argv[1]
 shown = doc.split("## What the rows must show", 1)[-1].split("## Tapped like a key", 1)[0]
 rows = [l for l in shown.splitlines() if l.startswith("| bbb") and l.endswith(("| yes |", "| NO |"))]
-readme = open("README.md").read()
-missing = [r for r in rows if r not in readme]
+guide = open("docs/guide-desk-tool.md").read()
+missing = [r for r in rows if r not in guide]
 if missing or not rows:
-    sys.exit("README.md: the replay table differs from scripts/replay-report.sh:\n" + "\n".join(missing))
+    sys.exit("docs/guide-desk-tool.md: the replay table differs from scripts/replay-report.sh:\n" + "\n".join(missing))
 if any(r.endswith("| NO |") for r in rows):
     sys.exit("replay: a calibrated row has false edges or is slower than a clean peer:\n" + "\n".join(rows))
 # The learner tapped like a key: per switch and regime, and from every prior and period swept.
@@ -221,15 +221,16 @@ learned = [l for l in taps.splitlines() if l.endswith(("| yes |", "| NO |"))]
 if len(learned) != 12 + 8 or any(r.endswith("| NO |") for r in learned):
     sys.exit("replay --taps: the learner lost a tap, has a false edge on a clean switch, or another row has fewer missed taps and fewer false edges:\n" + "\n".join(learned))
 table = [l for l in taps.splitlines() if l.startswith(("| push button", "| typing", "| fast-taps", "| double-click", "| hold"))]
-missing = [r for r in table if r not in readme]
+firmware = open("docs/guide-firmware.md").read()
+missing = [r for r in table if r not in firmware]
 if missing or len(table) != 5:
-    sys.exit("README.md: the tap table differs from scripts/replay-report.sh:\n" + "\n".join(missing))
+    sys.exit("docs/guide-firmware.md: the tap table differs from scripts/replay-report.sh:\n" + "\n".join(missing))
 PY
 else
   echo "SKIPPED: no ../shared/data/bouncy-button-uno.jsonl on this machine (not part of the repository)"
 fi
 
-step "the README's bounce-table example and its plots (docs/plots) are current, and docs/png's SVGs unchanged"
+step "the desk tool guide's bounce-table example and its plots (docs/plots) are current, and docs/png's SVGs unchanged"
 plots=$(mktemp -d)
 example=$(cargo run --quiet --release -p bounce-table -- bounce-table/scenes/example.toml --plot "$plots")
 diff -r "$plots" docs/plots
@@ -237,8 +238,8 @@ rm -rf "$plots"
 scripts/plot-png.sh --check
 python3 - "$example" <<'PY'
 import sys
-if sys.argv[1].strip() not in open("README.md").read():
-    sys.exit("README.md: the bounce-table example differs from the command's output")
+if sys.argv[1].strip() not in open("docs/guide-desk-tool.md").read():
+    sys.exit("docs/guide-desk-tool.md: the bounce-table example differs from the command's output")
 PY
 
 step "main job runs"

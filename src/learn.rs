@@ -831,7 +831,7 @@ mod tests {
 
     #[test]
     fn ten_thousand_clean_taps_at_16_a_second_keep_every_tap_and_grow_no_window() {
-        // 1 ms samples, the README's hand-operated prior (157 ms), the default fastest tap (31
+        // 1 ms samples, the hand-operated prior before its cap (157 ms), the default fastest tap (31
         // samples). Taps at 16 a second: 62.5 ms a tap, down 31 or 32 samples and up the rest.
         let p = LearnerPrior::at_period(157, 157, 1_000_000).unwrap_or_else(|_| unreachable!());
         let mut key = LearningState::new(false);

@@ -132,3 +132,13 @@ pub use window::{Margin, Window};
 #[cfg(doctest)]
 #[doc = include_str!("../README.md")]
 struct ReadmeDoctests;
+
+/// The firmware guide's examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../docs/guide-firmware.md")]
+struct FirmwareGuideDoctests;
+
+/// The tiers guide's examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../docs/guide-tiers.md")]
+struct TiersGuideDoctests;
