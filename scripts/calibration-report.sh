@@ -46,7 +46,7 @@ What is left out by default, and why: the rocker's \`Slow\` section is marked in
 capture (each test holds several presses); the push button's \`Slow\` section is not marked
 (its instrument predates the flag) but is the same protocol, so a section marked invalid for
 one switch of a capture is left out for all of them; and any event with a quiet interval
-longer than \`--quiet\` (0.2 s) inside holds several presses. The report says how many.
+longer than \`--event-gap\` (0.2 s) inside holds several presses. The report says how many.
 
 $report
 

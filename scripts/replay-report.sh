@@ -88,7 +88,7 @@ for regime, g in by.items():
     print("| %s | " % regime + " | ".join("%d / %d" % (g[d]["missed"], g[d]["false_edges"]) for d, _ in names) + " |")
 ')
 # Any prior from 5 to 157 ms, at 1 ms and 0.1 ms samples.
-sweep=$(for period in 1e-3 1e-4; do for prior in 5e-3 20e-3 50e-3 157e-3; do run --taps --format json --period "$period" --prior "$prior" | python3 -c '
+sweep=$(for period in 1e-3 1e-4; do for prior in 5e-3 20e-3 50e-3 157e-3; do run --taps --format json --sample-period "$period" --prior "$prior" | python3 -c '
 import json, sys
 period, prior = float(sys.argv[1]), float(sys.argv[2])
 rows = [json.loads(l) for l in sys.stdin]
@@ -126,7 +126,7 @@ for (sw, kind), g in groups.items():
     print("| %s | %s | %s | %s | %d | %d |" % (sw, kind, " | ".join(cells), f(g[-1]["window_s"]), early, late))
 ')
 # The firmware recipe's physics window (the tactile dome's 180 us at 10 us samples) as it is.
-fixed=$(run --period 1e-5 --window 180e-6 | python3 -c '
+fixed=$(run --sample-period 1e-5 --window 180e-6 | python3 -c '
 import sys
 groups = {}
 for l in sys.stdin:
@@ -154,10 +154,10 @@ bounce-table replay --switch-type push-button ../shared/data/bouncy-button-uno.j
 bounce-table replay --switch-type push-button --format json ../shared/data/bouncy-button-uno.jsonl
 bounce-table replay --switch-type push-button --format json --time-scale 10 --min-tap 0.31 ../shared/data/bouncy-button-uno.jsonl   # and 0.1
 bounce-table replay --switch-type push-button --format curve ../shared/data/bouncy-button-uno.jsonl
-bounce-table replay --switch-type push-button --period 1e-5 --window 180e-6 ../shared/data/bouncy-button-uno.jsonl
+bounce-table replay --switch-type push-button --sample-period 1e-5 --window 180e-6 ../shared/data/bouncy-button-uno.jsonl
 bounce-table calibrate ../shared/data/bouncy-button-uno.jsonl
 bounce-table replay --taps --window 157e-3 --switch-type push-button ../shared/data/bouncy-button-uno.jsonl   # and --format json
-bounce-table replay --taps --switch-type push-button --format json --period 1e-4 --prior 5e-3 ../shared/data/bouncy-button-uno.jsonl   # priors 5-157 ms, 1 and 0.1 ms
+bounce-table replay --taps --switch-type push-button --format json --sample-period 1e-4 --prior 5e-3 ../shared/data/bouncy-button-uno.jsonl   # priors 5-157 ms, 1 and 0.1 ms
 \`\`\`
 
 The capture is the one of \`docs/calibration.md\`: a push button and a snap-action rocker, 230
@@ -211,7 +211,7 @@ button no row has both fewer missed taps and fewer false edges.
 
 $tapchecks
 
-From any prior, at 1 ms and 0.1 ms samples (\`--prior\`, \`--period\`; push button false edges
+From any prior, at 1 ms and 0.1 ms samples (\`--prior\`, \`--sample-period\`; push button false edges
 for typing / fast taps / double-clicks / holds):
 
 | period | prior | taps lost (every switch and regime) | false edges on the rocker and the control | push button false edges | rows with both fewer missed taps and fewer false edges | holds |

@@ -89,7 +89,7 @@ function design(line) {
   const period = document.getElementById('period').value.trim();
   const margin = document.getElementById('margin').value.trim();
   const format = document.getElementById('constants-format').value;
-  const args = ['--period', period, '--margin', margin];
+  const args = ['--sample-period', period, '--margin', margin];
   error.textContent = '';
   for (const id of ['window', 'constants', 'envelope']) document.getElementById(id).innerHTML = '';
   const table = call('table', { text: line, args });

@@ -469,7 +469,7 @@ pub struct Skipped {
     /// Tests in a section named by `--skip-section`.
     pub named: usize,
     /// Events that hold several presses: a quiet interval inside them longer than the one that
-    /// separates events (`--quiet`).
+    /// separates events (`--event-gap`).
     pub several_presses: usize,
     /// The sections behind the first two counts.
     pub sections: Vec<String>,
@@ -520,7 +520,7 @@ impl Skipped {
         }
         if self.several_presses > 0 {
             parts.push(format!(
-                "{} events that hold several presses (quiet for over --quiet {quiet} s inside)",
+                "{} events that hold several presses (quiet for over --event-gap {quiet} s inside)",
                 self.several_presses
             ));
         }

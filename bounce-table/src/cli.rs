@@ -209,8 +209,8 @@ const SCENE_KEYS: &str =
 /// The table mode's arguments.
 #[derive(Args, Debug)]
 struct TableArgs {
-    /// Tick period of the windows (s)
-    #[arg(long, visible_alias = "sample-period", value_name = "SECONDS", default_value_t = 1e-4, value_parser = positive)]
+    /// The debouncer's sample period (s): the windows are given in its ticks
+    #[arg(long = "sample-period", visible_alias = "period", value_name = "SECONDS", default_value_t = 1e-4, value_parser = positive)]
     period: f64,
     /// table, markdown, csv, json, c (a header) or rust (constants)
     #[arg(long, value_name = "FORMAT", default_value = "table", value_parser = table_format)]
@@ -340,8 +340,8 @@ struct ReplayArgs {
     /// edges after every test (CSV)
     #[arg(long, value_name = "F", default_value = "table", value_parser = replay_format)]
     format: replay::Output,
-    /// Seconds between samples of the polled debouncers
-    #[arg(long, value_name = "S", default_value_t = 1e-3, value_parser = positive)]
+    /// The polled debouncers' sample period (s)
+    #[arg(long = "sample-period", visible_alias = "period", value_name = "SECONDS", default_value_t = 1e-3, value_parser = positive)]
     period: f64,
     /// The earlier share of the tests that calibrates, below 1
     #[arg(long, value_name = "F", default_value_t = 0.5, value_parser = split)]
@@ -459,8 +459,8 @@ struct CaptureArgs {
     /// A quiet interval of S ends a burst; later bursts are late bounce
     #[arg(long, value_name = "S", default_value_t = 5e-3, value_parser = seconds)]
     burst_gap: f64,
-    /// In CSV/VCD streams, a gap longer than S starts a new event
-    #[arg(long, value_name = "S", default_value_t = 0.2, value_parser = seconds)]
+    /// In CSV/VCD streams, a quiet gap longer than this (s) starts a new event
+    #[arg(long = "event-gap", visible_alias = "quiet", value_name = "SECONDS", default_value_t = 0.2, value_parser = seconds)]
     quiet: f64,
     /// The VCD signal (default: the only 1-bit one)
     #[arg(long, value_name = "NAME")]

@@ -451,7 +451,7 @@ pub fn waveforms(events: &[Event], split: f64, scale: f64) -> Vec<Waveforms> {
 pub fn rows(calibrated: (f64, f64), prior: f64, s: &replay::Settings) -> Result<Vec<Row>, String> {
     let too_long = |what: &str| {
         format!(
-            "{what} does not fit {} samples of --period {}: sample less often",
+            "{what} does not fit {} samples of --sample-period {}: sample less often",
             Windows::MAX_TICKS,
             s.period
         )

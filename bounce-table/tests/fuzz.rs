@@ -469,6 +469,7 @@ fn options_of_every_subcommand_parse_or_are_refused_in_one_line() {
         "--resolution",
         "--burst-gap",
         "--quiet",
+        "--event-gap",
         "--signal",
         "--active-high",
         "--skip-section",

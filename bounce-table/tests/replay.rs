@@ -180,7 +180,8 @@ fn bad_captures_and_options_are_named() {
     assert!(err.contains("bad.jsonl:2: not JSON"), "{err}");
     for (args, named) in [
         (&["--split", "1", "x.jsonl"][..], "--split"),
-        (&["--period", "0", "x.jsonl"], "--period"),
+        (&["--period", "0", "x.jsonl"], "--sample-period"),
+        (&["--sample-period", "0", "x.jsonl"], "--sample-period"),
         (&["--switch-type", "valve", "x.jsonl"], "--switch-type"),
         (&["--format", "yaml", "x.jsonl"], "--format"),
         (&["--export", "c", "x.jsonl"], "--export"),

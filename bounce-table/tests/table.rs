@@ -304,6 +304,7 @@ fn bad_input_names_the_file_the_entry_and_the_field_and_writes_nothing() {
     for args in [
         &["--format", "pdf"][..],
         &["--period", "0"],
+        &["--sample-period", "0"],
         &["--percentile", "120"],
         &["--samples", "0"],
         &["--what"],

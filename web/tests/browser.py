@@ -73,7 +73,7 @@ def main():
         driver.execute_script("document.getElementById('period').onchange()")
         wait.until(lambda d: d.find_element(By.ID, "window-error").text != "")
         refusal = driver.find_element(By.ID, "window-error").text
-        assert "'--period <SECONDS>': not a positive number" in refusal, refusal
+        assert "'--sample-period <SECONDS>': not a positive number" in refusal, refusal
         period.clear()
         period.send_keys("0.0001")
         driver.execute_script("document.getElementById('period').onchange()")

@@ -73,7 +73,7 @@ pub struct Loaded {
 
 /// Reads the capture into events, leaving out what cannot be one press or release (see
 /// [`capture::Skipped`]): sections the capture marks invalid, sections named by
-/// `--skip-section`, and events with a quiet interval longer than `--quiet` inside (several
+/// `--skip-section`, and events with a quiet interval longer than `--event-gap` inside (several
 /// presses). A folder is read file by file (in name order; hidden files left out), each an
 /// acquisition or several, all of one switch named after the folder.
 ///

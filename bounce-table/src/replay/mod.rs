@@ -4,7 +4,7 @@
 //! part (`--split`, half by default) calibrates, the later part is replayed. A window is set now
 //! and used later, so the split is chronological. Every debouncer starts each test settled at
 //! the contact's level before it and is run until long after the test's last change; the
-//! polled ones sample every `--period` (1 ms by default, the scan rate of the keyboard
+//! polled ones sample every `--sample-period` (1 ms by default, the scan rate of the keyboard
 //! firmwares below) at a phase that differs from test to test and is the same for every
 //! debouncer, the interrupt-driven ones see every change at its time.
 //!
@@ -391,18 +391,18 @@ pub fn run(events: &[Event], c: &calibrate::Options, s: &Settings) -> Result<Vec
             kind,
         )
         .ok_or_else(|| {
-            format!("{switch}: a calibrated window does not fit {} samples of --period {}: sample less often", Windows::MAX_TICKS, s.period)
+            format!("{switch}: a calibrated window does not fit {} samples of --sample-period {}: sample less often", Windows::MAX_TICKS, s.period)
         })?;
         if let Some(prior) = priors::from_switch_name(switch).or(s.switch_type) {
             let w = (prior.window() * s.time_scale).min(s.fastest_tap);
             rows.extend(ours("physics-prior", w, w, s.period, kind).ok_or_else(|| {
-                format!("{switch}: the prior's window does not fit {} samples of --period {}: sample less often", Windows::MAX_TICKS, s.period)
+                format!("{switch}: the prior's window does not fit {} samples of --sample-period {}: sample less often", Windows::MAX_TICKS, s.period)
             })?);
         }
         for &w in &s.fixed {
             rows.extend(
                 ours(&format!("fixed {}", time(w)), w, w, s.period, kind).ok_or_else(|| {
-                    format!("--window {w}: it does not fit {} samples of --period {}: sample less often", Windows::MAX_TICKS, s.period)
+                    format!("--window {w}: it does not fit {} samples of --sample-period {}: sample less often", Windows::MAX_TICKS, s.period)
                 })?,
             );
         }
@@ -448,7 +448,7 @@ pub fn learner_prior(
         .filter(|t| *t <= Windows::MAX_TICKS)
         .ok_or_else(|| {
             format!(
-                "the prior's window does not fit {} samples of --period {period}: sample less often",
+                "the prior's window does not fit {} samples of --sample-period {period}: sample less often",
                 Windows::MAX_TICKS
             )
         })?;
@@ -458,7 +458,7 @@ pub fn learner_prior(
         .min(f64::from(u16::MAX)) as u16;
     contact_bounce::LearnerPrior::new(ticks, ticks, tap).map_err(|_| {
         format!(
-            "--min-tap {fastest_tap} is {tap} samples of --period {period}: it must be 1 to {}",
+            "--min-tap {fastest_tap} is {tap} samples of --sample-period {period}: it must be 1 to {}",
             Windows::MAX_TICKS
         )
     })

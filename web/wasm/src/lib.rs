@@ -15,7 +15,7 @@
 //!   analog capture's acquisitions (times and volts, at most 4,000 points each) with their
 //!   file's thresholds, or a capture of levels' events; with calibrate's windows;
 //! - `table`: `{"text": <scene lines>, "args": [<table options>]}` -> the table mode's output
-//!   for those switches (`--format table|c|rust|...`, `--period`, `--margin`, ...) and, for
+//!   for those switches (`--format table|c|rust|...`, `--sample-period`, `--margin`, ...) and, for
 //!   each, its two plots (the envelope J(t) with the exact impacts, and the motion) as SVG.
 //!
 //! Several files in `files` are a folder's, read as the CLI reads a folder: `"switch"` names
