@@ -30,7 +30,7 @@ use crate::capture::{Event, Kind};
 use crate::output::time;
 use crate::plot::{Axis, Plot, Quantity, Series, Style};
 use crate::priors;
-use crate::replay::{self, edges, peers, Kernel, Polled, Row, Trace};
+use crate::replay::{self, edges, peers, Polled, Row, Sampling, Trace};
 use contact_bounce_reference::stats::nearest_rank;
 
 /// The fastest real tap, down or up (s): 16 taps a second, the known record, is 31 ms down and
@@ -483,7 +483,7 @@ pub fn rows(calibrated: (f64, f64), prior: f64, s: &replay::Settings) -> Result<
     rows.push(Row {
         name: "learned".to_owned(),
         window: None,
-        kernel: Kernel::Polled(Box::new(Learner::new(learner, s.period))),
+        sampling: Sampling::Polled(Box::new(Learner::new(learner, s.period))),
         settle: 0.0,
     });
     rows.extend(peers(s.period));
@@ -527,10 +527,10 @@ pub fn run(
             for mut row in rows((both(Kind::Press), both(Kind::Release)), prior, s)
                 .map_err(|e| format!("{}: {e}", w.switch))?
             {
-                let found = edges(&mut row.kernel, &seq.signal, seq.phase, s.period, seq.end);
-                let (window, reverts_like_a_tap) = match &row.kernel {
-                    Kernel::Polled(d) => (d.window().or(row.window), d.reverts_like_a_tap()),
-                    Kernel::Interrupt(_) => (row.window, None),
+                let found = edges(&mut row.sampling, &seq.signal, seq.phase, s.period, seq.end);
+                let (window, reverts_like_a_tap) = match &row.sampling {
+                    Sampling::Polled(d) => (d.window().or(row.window), d.reverts_like_a_tap()),
+                    Sampling::Interrupt(_) => (row.window, None),
                 };
                 lines.push(TapLine {
                     switch: w.switch.clone(),
@@ -741,7 +741,7 @@ pub fn window_costs(events: &[Event], c: &calibrate::Options) -> String {
                     || "window beyond the counter at 1 ms".to_owned(),
                     |mut row| {
                         let found =
-                            edges(&mut row.kernel, &seq.signal, seq.phase, s.period, seq.end);
+                            edges(&mut row.sampling, &seq.signal, seq.phase, s.period, seq.end);
                         let score = TapScore::of(&seq, &found);
                         format!("{} / {}", score.missed, score.false_edges)
                     },

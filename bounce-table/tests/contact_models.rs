@@ -4,10 +4,10 @@
 //! timing alone does not fix them all), and a model must not fit what it cannot produce as
 //! well as what it can.
 
-use bounce_table::calibrate::contact::{ContactFit, Kind};
+use bounce_table::calibrate::contact::{ContactFit, ContactModel};
 
 /// Durations at 40 evenly spread probabilities of a model with known parameters.
-fn synthetic(kind: Kind, params: Vec<f64>) -> (ContactFit, Vec<f64>) {
+fn synthetic(kind: ContactModel, params: Vec<f64>) -> (ContactFit, Vec<f64>) {
     let truth = ContactFit {
         kind,
         params,
@@ -33,7 +33,7 @@ fn distance(model: &[f64], observed: &[f64]) -> f64 {
         / n
 }
 
-fn check(kind: Kind, params: Vec<f64>) -> (ContactFit, Vec<f64>, f64) {
+fn check(kind: ContactModel, params: Vec<f64>) -> (ContactFit, Vec<f64>, f64) {
     let (truth, durations) = synthetic(kind, params);
     let reopening = truth.reopening().expect("the known model simulates");
     let fit = ContactFit::fit(kind, &durations, reopening, 1).expect("a fit");
@@ -59,7 +59,7 @@ fn two_bodies_are_refitted_from_their_own_bounces() {
     // A stuck pair that reopens in 65 % of presses, up to 4 times: f1 1 kHz, f2 = 2 f1,
     // m2 = 0.3 m1.
     let (fit, durations, reopening) = check(
-        Kind::TwoBody,
+        ContactModel::TwoBody,
         vec![
             1000_f64.ln(),
             2.0_f64.ln(),
@@ -72,7 +72,7 @@ fn two_bodies_are_refitted_from_their_own_bounces() {
     );
     // A compliant contact cannot reopen: its best fit to the same presses is worse by at least
     // the reopening share's square.
-    let other = ContactFit::fit(Kind::Compliant, &durations, reopening, 1).unwrap();
+    let other = ContactFit::fit(ContactModel::Compliant, &durations, reopening, 1).unwrap();
     assert!(other.misfit >= reopening * reopening, "{other:?}");
     assert!(other.misfit > fit.misfit, "{other:?} vs {fit:?}");
 }
@@ -80,7 +80,7 @@ fn two_bodies_are_refitted_from_their_own_bounces() {
 #[test]
 fn a_compliant_contact_is_refitted_from_its_own_bounces() {
     let _ = check(
-        Kind::Compliant,
+        ContactModel::Compliant,
         vec![
             1000_f64.ln(),
             20.0_f64.ln(),
@@ -94,8 +94,8 @@ fn a_compliant_contact_is_refitted_from_its_own_bounces() {
 #[test]
 fn too_few_bounces_give_no_fit() {
     assert_eq!(
-        ContactFit::fit(Kind::TwoBody, &[1e-3, 0.0, 2e-3], 0.0, 1),
+        ContactFit::fit(ContactModel::TwoBody, &[1e-3, 0.0, 2e-3], 0.0, 1),
         None
     );
-    assert_eq!(ContactFit::fit(Kind::Compliant, &[], 0.0, 1), None);
+    assert_eq!(ContactFit::fit(ContactModel::Compliant, &[], 0.0, 1), None);
 }

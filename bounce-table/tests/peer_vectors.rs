@@ -18,7 +18,7 @@
 //! 6th differing scan at 1 ms, the 4th at 2 ms and the 3rd at 4 ms. Checked on traces derived
 //! by hand from that rule, and on random traces against an integer-millisecond model of it.
 
-use bounce_table::replay::{peers, Kernel, Polled};
+use bounce_table::replay::{peers, Polled, Sampling};
 
 /// One step: the time (ms), the pin's new level if it changes (`D` pressed, `U` released), and
 /// the reported change expected at that scan.
@@ -59,9 +59,9 @@ fn peer(name: &str) -> Box<dyn Polled> {
         .into_iter()
         .find(|r| r.name == name)
         .unwrap_or_else(|| panic!("no peer {name}"));
-    match row.kernel {
-        Kernel::Polled(d) => d,
-        Kernel::Interrupt(_) => panic!("{name} is not polled"),
+    match row.sampling {
+        Sampling::Polled(d) => d,
+        Sampling::Interrupt(_) => panic!("{name} is not polled"),
     }
 }
 
@@ -293,7 +293,7 @@ fn zmk_ours(pins: &[bool], period_ms: u32) -> Vec<u32> {
         .into_iter()
         .find(|r| r.name == "zmk integrator")
         .unwrap_or_else(|| panic!("no zmk integrator"));
-    let Kernel::Polled(mut d) = row.kernel else {
+    let Sampling::Polled(mut d) = row.sampling else {
         panic!("the zmk integrator is polled")
     };
     d.reset(false);
@@ -352,7 +352,7 @@ fn timed(name: &str, changes: &[f64]) -> Vec<(u32, bool)> {
         .into_iter()
         .find(|r| r.name == name)
         .unwrap_or_else(|| panic!("no peer {name}"));
-    bounce_table::replay::edges(&mut row.kernel, &trace, 0.0, 1e-3, 0.1)
+    bounce_table::replay::edges(&mut row.sampling, &trace, 0.0, 1e-3, 0.1)
         .into_iter()
         .map(|(t, closed)| {
             #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]

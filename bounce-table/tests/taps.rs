@@ -3,7 +3,7 @@
 
 use std::process::Command;
 
-use bounce_table::replay::{edges, Kernel, Trace};
+use bounce_table::replay::{edges, Sampling, Trace};
 use bounce_table::taps::{sequence, Learner, Regime, TapScore, Waveforms};
 use contact_bounce::LearnerPrior;
 
@@ -175,7 +175,7 @@ fn the_learner_keeps_every_tap_from_any_prior_at_1_ms_and_0_1_ms() {
             for w in [Waveforms::control(), rocker()] {
                 for (j, regime) in Regime::ALL.into_iter().enumerate() {
                     let seq = sequence(&w, regime, 200, 7 + j as u64);
-                    let mut k = Kernel::Polled(Box::new(Learner::new(p, period)));
+                    let mut k = Sampling::Polled(Box::new(Learner::new(p, period)));
                     let found = edges(&mut k, &seq.signal, seq.phase, period, seq.end);
                     let s = TapScore::of(&seq, &found);
                     assert_eq!(

@@ -30,20 +30,20 @@ const STEPS: usize = 400;
 
 /// A real-contact model.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Kind {
+pub enum ContactModel {
     /// Two bodies with unequal partial frequencies (the paper's Eq. 1).
     TwoBody,
     /// One body against a compliant stop.
     Compliant,
 }
 
-impl Kind {
+impl ContactModel {
     /// Its name in reports.
     #[must_use]
     pub fn name(self) -> &'static str {
         match self {
-            Kind::TwoBody => "two bodies",
-            Kind::Compliant => "compliant contact",
+            ContactModel::TwoBody => "two bodies",
+            ContactModel::Compliant => "compliant contact",
         }
     }
 
@@ -53,7 +53,7 @@ impl Kind {
         let f = (1.0 / scale).ln();
         match self {
             // ln f1 (Hz), ln(w2 / w1), ln(m2 / m1), zeta, R, ln j, ln sigma
-            Kind::TwoBody => vec![
+            ContactModel::TwoBody => vec![
                 (f - 2.0, f + 3.0),
                 (0.2_f64.ln(), 5.0_f64.ln()),
                 (0.1_f64.ln(), 10.0_f64.ln()),
@@ -63,7 +63,7 @@ impl Kind {
                 (0.02_f64.ln(), 1.5_f64.ln()),
             ],
             // ln f (Hz), ln(kappa / Omega), zeta_c, ln j, ln sigma
-            Kind::Compliant => vec![
+            ContactModel::Compliant => vec![
                 (f - 2.0, f + 3.0),
                 (2.0_f64.ln(), 1000.0_f64.ln()),
                 (0.01, 0.9),
@@ -78,7 +78,7 @@ impl Kind {
 #[derive(Debug, Clone, PartialEq)]
 pub struct ContactFit {
     /// Which model.
-    pub kind: Kind,
+    pub kind: ContactModel,
     /// Its parameters in the searched coordinates (see [`ContactFit::describe`]).
     pub params: Vec<f64>,
     /// The misfit on the fitted durations: the mean squared difference of the distribution
@@ -107,7 +107,7 @@ fn speeds(spread: &[f64], ln_f: f64, n: usize) -> Vec<f64> {
         .collect()
 }
 
-/// The two bodies of parameters `p` (see [`Kind::bounds`]) closing at `v0`.
+/// The two bodies of parameters `p` (see [`ContactModel::bounds`]) closing at `v0`.
 fn two_bodies(p: &[f64], v0: f64) -> TwoBodies {
     let w1 = 2.0 * std::f64::consts::PI * p[0].exp();
     let w2 = w1 * p[1].exp();
@@ -128,11 +128,11 @@ fn two_bodies(p: &[f64], v0: f64) -> TwoBodies {
 /// The model's bounce for each of `n` closing speeds (sorted) and the share of them that
 /// reopen after sticking, or `None` where a simulation fails (the parameters are then out of
 /// the model's reach).
-fn bounces(kind: Kind, p: &[f64], n: usize) -> Option<(Vec<f64>, f64)> {
+fn bounces(kind: ContactModel, p: &[f64], n: usize) -> Option<(Vec<f64>, f64)> {
     let mut out = Vec::with_capacity(n);
     let mut reopen = 0usize;
     match kind {
-        Kind::TwoBody => {
+        ContactModel::TwoBody => {
             for v0 in speeds(&p[5..7], p[0], n) {
                 let mut separated = false;
                 let o = two_body::simulate_traced(&two_bodies(p, v0), 20_000, |c| {
@@ -143,7 +143,7 @@ fn bounces(kind: Kind, p: &[f64], n: usize) -> Option<(Vec<f64>, f64)> {
                 reopen += usize::from(separated);
             }
         }
-        Kind::Compliant => {
+        ContactModel::Compliant => {
             for v0 in speeds(&p[3..5], p[0], n) {
                 let omega = 2.0 * std::f64::consts::PI * p[0].exp();
                 let s = Compliant {
@@ -256,7 +256,7 @@ impl ContactFit {
     /// that reopen, from `seed`. `None` with fewer than 3 positive durations, or when no
     /// parameters inside the searched box reproduce any (every simulation failed).
     #[must_use]
-    pub fn fit(kind: Kind, durations: &[f64], reopening: f64, seed: u64) -> Option<Self> {
+    pub fn fit(kind: ContactModel, durations: &[f64], reopening: f64, seed: u64) -> Option<Self> {
         let observed = sorted(
             durations
                 .iter()
@@ -318,7 +318,7 @@ impl ContactFit {
     pub fn describe(&self) -> String {
         let p = &self.params;
         match self.kind {
-            Kind::TwoBody => format!(
+            ContactModel::TwoBody => format!(
                 "f1 {:.0} Hz, f2/f1 {:.2}, m2/m1 {:.2}, zeta {:.3}, R {:.2}, j {:.2} x/ {:.2}",
                 p[0].exp(),
                 p[1].exp(),
@@ -328,7 +328,7 @@ impl ContactFit {
                 p[5].exp(),
                 p[6].exp().exp()
             ),
-            Kind::Compliant => format!(
+            ContactModel::Compliant => format!(
                 "f {:.0} Hz, kappa/Omega {:.1}, zeta_c {:.2} (R {:.2}), j {:.2} x/ {:.2}",
                 p[0].exp(),
                 p[1].exp(),
@@ -439,7 +439,7 @@ pub fn report(groups: &super::Groups, seed: u64) -> String {
         } else {
             0.0
         };
-        let kinds = [Kind::TwoBody, Kind::Compliant];
+        let kinds = [ContactModel::TwoBody, ContactModel::Compliant];
         let fits = crate::workers::each(kinds.len(), &|i| {
             kinds
                 .get(i)

@@ -102,7 +102,7 @@ impl Polled for Ours {
 }
 
 /// How a debouncer sees the pin.
-pub enum Kernel {
+pub enum Sampling {
     /// Sampled every period.
     Polled(Box<dyn Polled>),
     /// Every edge interrupt restarts a timer of this many seconds; when it expires the pin is
@@ -116,8 +116,8 @@ pub struct Row {
     pub name: String,
     /// Its window (s), for the kind replayed; `None` when it has none in seconds.
     pub window: Option<f64>,
-    /// The debouncer.
-    pub kernel: Kernel,
+    /// The debouncer, and how it sees the pin.
+    pub sampling: Sampling,
     /// The longest it may wait before reporting (s): how long to run after the last change.
     pub settle: f64,
 }
@@ -154,7 +154,7 @@ pub fn score(row: &mut Row, traces: &[Trace], period: f64) -> Score {
     };
     for (i, trace) in traces.iter().enumerate() {
         let end = trace.last() + row.settle + 4.0 * period;
-        let edges: Vec<f64> = edges(&mut row.kernel, trace, phase(i), period, end)
+        let edges: Vec<f64> = edges(&mut row.sampling, trace, phase(i), period, end)
             .into_iter()
             .map(|(t, _)| t)
             .collect();
@@ -163,19 +163,19 @@ pub fn score(row: &mut Row, traces: &[Trace], period: f64) -> Score {
     s
 }
 
-/// Runs `kernel` over `trace` from its settled state before it: a polled debouncer samples at
+/// Runs the debouncer `sampling` over `trace` from its settled state before it: a polled one samples at
 /// `(phase + k) * period` up to `end` (s), an interrupt-driven one sees every change. Returns
 /// the reported edges: their times (s) and the new state (closed or not).
 pub fn edges(
-    kernel: &mut Kernel,
+    sampling: &mut Sampling,
     trace: &Trace,
     phase: f64,
     period: f64,
     end: f64,
 ) -> Vec<(f64, bool)> {
     let mut edges = Vec::new();
-    match kernel {
-        Kernel::Polled(d) => {
+    match sampling {
+        Sampling::Polled(d) => {
             d.reset(trace.closed_before);
             // The contact at each sample, walking the changes once.
             let (mut next, mut closed) = (0, trace.closed_before);
@@ -196,7 +196,7 @@ pub fn edges(
                 k += 1;
             }
         }
-        Kernel::Interrupt(delay) => {
+        Sampling::Interrupt(delay) => {
             let mut reported = trace.closed_before;
             for (j, &c) in trace.changes.iter().enumerate() {
                 let fires = c + *delay;
@@ -256,7 +256,7 @@ pub fn ours(label: &str, press: f64, release: f64, period: f64, kind: Kind) -> O
                 Some(Row {
                     name: format!("{label} {mode_name}"),
                     window: Some(shown),
-                    kernel: Kernel::Polled(Box::new(Ours {
+                    sampling: Sampling::Polled(Box::new(Ours {
                         windows,
                         state: State::new(false),
                     })),
@@ -851,13 +851,13 @@ mod tests {
         let mut row = Row {
             name: "x".into(),
             window: None,
-            kernel: Kernel::Interrupt(5e-3),
+            sampling: Sampling::Interrupt(5e-3),
             settle: 5e-3,
         };
         let s = score(&mut row, std::slice::from_ref(&t), 1e-3);
         assert_eq!((s.false_edges, s.latencies.len()), (0, 1));
         assert!((s.latencies[0] - 7e-3).abs() < 1e-12);
-        row.kernel = Kernel::Interrupt(1e-3);
+        row.sampling = Sampling::Interrupt(1e-3);
         let s = score(&mut row, &[t], 1e-3);
         assert_eq!(s.false_edges, 2);
         assert!((s.latencies[0] - 3e-3).abs() < 1e-12);

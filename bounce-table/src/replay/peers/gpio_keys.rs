@@ -2,7 +2,7 @@
 //! 5 ms timer; when it expires the pin is read and reported if it changed. Zephyr `gpio-keys`
 //! (input subsystem; `debounce-interval-ms`, default 30): the same algorithm, at 30 ms.
 
-use crate::replay::{Kernel, Row};
+use crate::replay::{Sampling, Row};
 
 /// Linux's and Zephyr's `gpio-keys`, at their defaults.
 pub fn rows(_period: f64) -> Vec<Row> {
@@ -11,7 +11,7 @@ pub fn rows(_period: f64) -> Vec<Row> {
         .map(|(name, delay)| Row {
             name: name.to_owned(),
             window: Some(delay),
-            kernel: Kernel::Interrupt(delay),
+            sampling: Sampling::Interrupt(delay),
             settle: delay,
         })
         .collect()

@@ -10,10 +10,10 @@
 //! To add a peer: write `<peer>.rs` here with its module docs (where its algorithm and default
 //! come from) and `pub fn rows(period: f64) -> Vec<Row>` (a polled debouncer implements
 //! [`Polled`] and is wrapped by [`polled`]; an interrupt-driven one is a
-//! [`Kernel::Interrupt`](crate::replay::Kernel::Interrupt)), then add its name to the
+//! [`Sampling::Interrupt`](crate::replay::Sampling::Interrupt)), then add its name to the
 //! `peers!` line below. Its rows appear in every table, plot and tap replay, in that order.
 
-use crate::replay::{Kernel, Polled, Row};
+use crate::replay::{Polled, Row, Sampling};
 
 /// Declares each peer's module and lists their rows, in the order given.
 macro_rules! peers {
@@ -36,7 +36,7 @@ pub(crate) fn polled(name: &str, window: f64, period: f64, d: Box<dyn Polled>) -
     Row {
         name: name.to_owned(),
         window: Some(window),
-        kernel: Kernel::Polled(d),
+        sampling: Sampling::Polled(d),
         settle: window + 2.0 * period,
     }
 }
