@@ -175,6 +175,7 @@ def main():
                 time.sleep(0.05)
             assert seen and "10.1 MB" in seen[0], seen[:3]
             assert slowest < 0.5, f"the page took {slowest:.2f} s to answer while a capture was analysed"
+            print(f"web: a 10 MB capture: {len(seen)} polls during its analysis, the page's slowest answer {slowest * 1e3:.0f} ms; steps seen: {sorted(set(l.split(': ', 1)[-1] for l in seen))}")
             WebDriverWait(driver, 120).until(lambda d: d.find_element(By.ID, "progress").text == "")
             page = driver.find_element(By.ID, "calibrate").get_attribute("textContent")
             assert page.strip() == cli("calibrate", big).strip(), "calibrate differs on the 10 MB capture"
