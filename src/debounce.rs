@@ -18,8 +18,8 @@ use embedded_hal::digital::InputPin;
 use crate::error::{Error, Parameter, Reason};
 use crate::window::Window;
 
-/// A debounced change of the contact.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+/// A debounced change of the contact (ordered: a press before a release).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum Edge {
     /// The contact closed (make).

@@ -10,22 +10,21 @@ use std::fmt;
 
 use serde_json::Value;
 
-/// Which way the switch moved.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
-pub enum Kind {
-    /// Open to closed (make).
-    Press,
-    /// Closed to open (break).
-    Release,
+/// Which way the switch moved: the core's own type (its debouncers report the same edges), so
+/// that press and release have one name from the pin to the report.
+pub use contact_bounce::Edge;
+
+/// An edge's name in the outputs ("press", "release").
+pub trait EdgeName {
+    /// Its name.
+    fn name(self) -> &'static str;
 }
 
-impl Kind {
-    /// Its name in the outputs.
-    #[must_use]
-    pub fn name(self) -> &'static str {
+impl EdgeName for Edge {
+    fn name(self) -> &'static str {
         match self {
-            Kind::Press => "press",
-            Kind::Release => "release",
+            Edge::Press => "press",
+            Edge::Release => "release",
         }
     }
 }
@@ -50,7 +49,7 @@ pub struct Event {
     /// Where it came from (a line, a time), for messages.
     pub origin: String,
     /// Press or release (from the state before the first change).
-    pub kind: Kind,
+    pub kind: Edge,
     /// The times of the changes, nondecreasing, in seconds; the contact alternates at each.
     pub changes: Vec<f64>,
     /// The part of the test protocol the event belongs to (the JSON Lines `section`: how the
@@ -132,9 +131,9 @@ fn event(switch: &str, closed_before: bool, changes: Vec<f64>) -> Event {
         switch: switch.to_owned(),
         origin: format!("t = {:.6} s", changes.first().copied().unwrap_or(0.0)),
         kind: if closed_before {
-            Kind::Release
+            Edge::Release
         } else {
-            Kind::Press
+            Edge::Press
         },
         changes,
         section: None,
@@ -605,8 +604,8 @@ pub fn read_jsonl(
             .as_str()
             .ok_or_else(|| error(file, line, "`dataset` is not a string"))?;
         let kind = match field("kind")?.as_str() {
-            Some("press") => Kind::Press,
-            Some("release") => Kind::Release,
+            Some("press") => Edge::Press,
+            Some("release") => Edge::Release,
             _ => return Err(error(file, line, "`kind` is not \"press\" or \"release\"")),
         };
         let entries = field("events")?
@@ -625,7 +624,7 @@ pub fn read_jsonl(
         };
         let mut closed = is_closed(Polarity::ActiveLow, first?.1);
         let closed_before = closed;
-        if (kind == Kind::Press) == closed_before {
+        if (kind == Edge::Press) == closed_before {
             return Err(error(
                 file,
                 line,
@@ -724,7 +723,7 @@ impl Event {
         let mut bursts = usize::from(!self.changes.is_empty());
         let mut first_burst_flights = None;
         // After the first change the contact is closed for a press, open for a release.
-        let mut closed = self.kind == Kind::Press;
+        let mut closed = self.kind == Edge::Press;
         for w in self.changes.windows(2) {
             let d = w[1] - w[0];
             if d >= burst_gap {
@@ -764,7 +763,7 @@ impl Event {
 
     /// The press's [`Hold`], if any (see [`Description::hold`]).
     fn hold(&self, resolution: f64, burst_gap: f64) -> Option<Hold> {
-        if self.kind != Kind::Press {
+        if self.kind != Edge::Press {
             return None;
         }
         let first = self.changes.first()?;
@@ -809,10 +808,10 @@ mod tests {
         };
         let e = s.segment("sw", 0.1);
         assert_eq!(e.len(), 2);
-        assert_eq!(e[0].kind, Kind::Press);
+        assert_eq!(e[0].kind, Edge::Press);
         assert_eq!(e[0].changes, vec![1.0, 1.001, 1.002]);
         // Three changes leave it closed: the next event is a release.
-        assert_eq!(e[1].kind, Kind::Release);
+        assert_eq!(e[1].kind, Edge::Release);
     }
 
     #[test]
@@ -820,7 +819,7 @@ mod tests {
         let e = Event {
             switch: "sw".into(),
             origin: String::new(),
-            kind: Kind::Press,
+            kind: Edge::Press,
             // closed 10 us, open 1 us (chatter), closed 20 us, open 30 us, closed.
             changes: vec![0.0, 10e-6, 11e-6, 31e-6, 61e-6],
             section: None,
@@ -843,7 +842,7 @@ mod tests {
         let mut e = Event {
             switch: "sw".into(),
             origin: String::new(),
-            kind: Kind::Press,
+            kind: Edge::Press,
             changes: vec![0.0, 5e-6, 105e-6, 107e-6, 147e-6, 447e-6, 467e-6],
             section: None,
         };
@@ -856,7 +855,7 @@ mod tests {
         e.changes = vec![0.0, 300e-6, 301e-6];
         assert_eq!(e.describe(3e-6, 5e-3).hold, None);
         e.changes = vec![0.0, 5e-6, 105e-6, 405e-6, 406e-6];
-        e.kind = Kind::Release;
+        e.kind = Edge::Release;
         assert_eq!(e.describe(3e-6, 5e-3).hold, None);
     }
 
@@ -865,7 +864,7 @@ mod tests {
         let e = Event {
             switch: "sw".into(),
             origin: String::new(),
-            kind: Kind::Release,
+            kind: Edge::Release,
             // open 20 us, closed 10 us, open 5 ms (quiet), closed 30 us, open 2 ms (quiet),
             // closed 40 us, open.
             changes: vec![0.0, 20e-6, 30e-6, 5.03e-3, 5.06e-3, 7.06e-3, 7.1e-3],

@@ -6,6 +6,7 @@
 //! bounce-table calibrate [OPTIONS] CAPTURE   describe a capture of a real switch
 //! ```
 
+use bounce_table::capture::EdgeName;
 use std::process::ExitCode;
 
 use bounce_table::cli::{self, Invocation};

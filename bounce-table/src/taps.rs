@@ -26,7 +26,7 @@ use std::collections::BTreeMap;
 use contact_bounce::{LearnerPrior, LearningState, Windows};
 
 use crate::calibrate;
-use crate::capture::{Event, Kind};
+use crate::capture::{Edge, Event};
 use crate::output::time;
 use crate::plot::{Axis, Plot, Quantity, Series, Style};
 use crate::priors;
@@ -416,7 +416,7 @@ impl TapLine {
 #[must_use]
 pub fn waveforms(events: &[Event], split: f64, scale: f64) -> Vec<Waveforms> {
     let mut out: Vec<Waveforms> = Vec::new();
-    let mut by: BTreeMap<(&str, Kind), Vec<&Event>> = BTreeMap::new();
+    let mut by: BTreeMap<(&str, Edge), Vec<&Event>> = BTreeMap::new();
     for e in events {
         by.entry((e.switch.as_str(), e.kind)).or_default().push(e);
         if !out.iter().any(|w| w.switch == e.switch) {
@@ -433,8 +433,8 @@ pub fn waveforms(events: &[Event], split: f64, scale: f64) -> Vec<Waveforms> {
         if let Some(w) = out.iter_mut().find(|w| w.switch == switch) {
             let traces = later.iter().map(|e| Trace::of(e, scale)).collect();
             match kind {
-                Kind::Press => w.presses = traces,
-                Kind::Release => w.releases = traces,
+                Edge::Press => w.presses = traces,
+                Edge::Release => w.releases = traces,
             }
         }
     }
@@ -465,17 +465,17 @@ pub fn rows(calibrated: (f64, f64), prior: f64, s: &replay::Settings) -> Result<
     };
     let (p, r) = calibrated;
     rows.extend(longer(
-        replay::ours("calibrated", p, r, s.period, Kind::Press)
+        replay::ours("calibrated", p, r, s.period, Edge::Press)
             .ok_or_else(|| too_long("a calibrated window"))?,
         p.max(r),
     ));
     rows.extend(
-        replay::ours("physics-prior", prior, prior, s.period, Kind::Press)
+        replay::ours("physics-prior", prior, prior, s.period, Edge::Press)
             .ok_or_else(|| too_long("the prior's window"))?,
     );
     for &w in &s.fixed {
         rows.extend(
-            replay::ours(&format!("fixed {}", time(w)), w, w, s.period, Kind::Press)
+            replay::ours(&format!("fixed {}", time(w)), w, w, s.period, Edge::Press)
                 .ok_or_else(|| too_long("--window"))?,
         );
     }
@@ -524,7 +524,7 @@ pub fn run(
         };
         for (j, regime) in Regime::ALL.into_iter().enumerate() {
             let seq = sequence(&w, regime, t.count, regime_seed(t.seed, j));
-            for mut row in rows((both(Kind::Press), both(Kind::Release)), prior, s)
+            for mut row in rows((both(Edge::Press), both(Edge::Release)), prior, s)
                 .map_err(|e| format!("{}: {e}", w.switch))?
             {
                 let found = edges(&mut row.sampling, &seq.signal, seq.phase, s.period, seq.end);
@@ -731,11 +731,11 @@ pub fn window_costs(events: &[Event], c: &calibrate::Options) -> String {
                 .copied()
                 .unwrap_or(0.0)
         };
-        let (p, r) = (both(Kind::Press), both(Kind::Release));
+        let (p, r) = (both(Edge::Press), both(Edge::Release));
         let mut cells = Vec::new();
         for (j, regime) in Regime::ALL.into_iter().enumerate() {
             let seq = sequence(&w, regime, t.count, regime_seed(t.seed, j));
-            let cell = replay::ours("calibrated", p, r, s.period, Kind::Press)
+            let cell = replay::ours("calibrated", p, r, s.period, Edge::Press)
                 .and_then(|rows| rows.into_iter().next())
                 .map_or_else(
                     || "window beyond the counter at 1 ms".to_owned(),

@@ -9,7 +9,7 @@ use bounce_table::calibrate::{
     group, random_splits, reopening_threshold, validations, window, BounceModel, ImpactFit,
     LogNormal,
 };
-use bounce_table::capture::{Event, Kind};
+use bounce_table::capture::{Edge, Event};
 use bounce_table::emit::Lang;
 use bounce_table::spreads::SplitMix;
 use contact_bounce_reference::{simulate_observed, OneBody, DEFAULT_BUDGET};
@@ -49,7 +49,7 @@ fn press_with_dwell(restitution: f64, closing_speed: f64, start: f64, dwell: f64
     Event {
         switch: "synthetic".into(),
         origin: String::new(),
-        kind: Kind::Press,
+        kind: Edge::Press,
         changes,
         section: None,
     }
@@ -114,7 +114,7 @@ fn flights_that_do_not_shrink_are_not_called_an_impact_model() {
         .map(|i| Event {
             switch: "chatter".into(),
             origin: String::new(),
-            kind: Kind::Press,
+            kind: Edge::Press,
             changes: changes.iter().map(|t| t + f64::from(i)).collect(),
             section: None,
         })
@@ -168,7 +168,7 @@ fn exported_windows_compile_as_c_and_rust() {
             Event {
                 switch: "long".to_owned(),
                 origin: format!("event {i}"),
-                kind: Kind::Press,
+                kind: Edge::Press,
                 changes: vec![start, start + 1e11, start + 2e11, start + 3e11],
                 section: None,
             }
@@ -302,7 +302,7 @@ fn the_fitted_model_recovers_a_known_mixture_of_clean_edges_bursts_and_late_burs
             Event {
                 switch: "mixture".into(),
                 origin: String::new(),
-                kind: Kind::Press,
+                kind: Edge::Press,
                 changes,
                 section: None,
             }
@@ -360,7 +360,7 @@ fn a_bounce_shorter_than_the_resolution_is_fitted_with_the_clean_edges() {
         events.push(Event {
             switch: "glitchy".into(),
             origin: String::new(),
-            kind: Kind::Release,
+            kind: Edge::Release,
             changes,
             section: None,
         });
@@ -493,7 +493,7 @@ fn two_stage_press(start: f64, v0: f64, contact: f64, reopen: Option<(f64, f64)>
     Event {
         switch: "two-stage".into(),
         origin: String::new(),
-        kind: Kind::Press,
+        kind: Edge::Press,
         changes,
         section: None,
     }
@@ -561,7 +561,7 @@ fn a_later_half_that_never_bounced_is_said_so_not_divided_by() {
     events.extend((10..20).map(|i| Event {
         switch: "synthetic".into(),
         origin: format!("event {i}"),
-        kind: Kind::Press,
+        kind: Edge::Press,
         changes: vec![f64::from(i)],
         section: None,
     }));
@@ -581,7 +581,7 @@ fn the_bounce_is_counted_per_section_of_the_protocol() {
     let release = |i: u32, section: &str, changes: Vec<f64>| Event {
         switch: "synthetic".into(),
         origin: format!("event {i}"),
-        kind: Kind::Release,
+        kind: Edge::Release,
         changes: changes.iter().map(|t| t + f64::from(i)).collect(),
         section: Some(section.into()),
     };
@@ -634,7 +634,7 @@ fn a_late_burst_exactly_a_gap_long_keeps_the_fit() {
     let release = |i: u32, changes: Vec<f64>| Event {
         switch: "ticks".into(),
         origin: format!("event {i}"),
-        kind: Kind::Release,
+        kind: Edge::Release,
         changes,
         section: None,
     };

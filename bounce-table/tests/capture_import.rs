@@ -2,7 +2,7 @@
 //! Python's csv module and a VCD exported by sigrok-cli (`scripts/capture-fixtures.py`), holding
 //! the same synthetic capture as `expected.json`. And malformed variants of them, rejected with the line named.
 
-use bounce_table::capture::{read_csv, read_vcd, Kind, Polarity, Stream};
+use bounce_table::capture::{read_csv, read_vcd, Edge, Polarity, Stream};
 use serde_json::Value;
 
 fn fixture(name: &str) -> String {
@@ -106,10 +106,10 @@ fn python_csv_output_reads_back_exactly() {
 fn the_capture_is_cut_into_its_presses_and_releases() {
     let s = expected();
     let events = s.segment("button", 0.2);
-    let kinds: Vec<Kind> = events.iter().map(|e| e.kind).collect();
+    let kinds: Vec<Edge> = events.iter().map(|e| e.kind).collect();
     assert_eq!(
         kinds,
-        [Kind::Press, Kind::Release, Kind::Press, Kind::Release]
+        [Edge::Press, Edge::Release, Edge::Press, Edge::Release]
     );
     // A quiet gap shorter than the late re-close (1 ms after the release) splits that event.
     assert_eq!(s.segment("button", 0.5e-3).len(), 5);

@@ -379,7 +379,7 @@ pub fn report(groups: &super::Groups, seed: u64) -> String {
     };
     let mut tasks = Vec::new();
     for ((switch, kind), d) in groups {
-        if *kind != crate::capture::Kind::Press {
+        if *kind != crate::capture::Edge::Press {
             continue;
         }
         let refs: Vec<&crate::capture::Description> = d.iter().collect();

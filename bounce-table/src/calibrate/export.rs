@@ -3,6 +3,7 @@
 use super::window::{window, MIN_EVENTS};
 use super::Groups;
 use crate::capture;
+use crate::capture::EdgeName;
 use crate::emit::Lang;
 use crate::output::{comment, identifier, window_ns};
 

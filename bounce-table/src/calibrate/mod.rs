@@ -12,9 +12,10 @@ mod report;
 mod window;
 mod written;
 
+use crate::capture::EdgeName;
 use std::collections::BTreeMap;
 
-use crate::capture::{self, Event, Kind};
+use crate::capture::{self, Edge, Event};
 
 pub use export::export;
 pub use fit::{reopening_threshold, BounceModel, ImpactFit, LogNormal, MIN_FIT};
@@ -72,7 +73,7 @@ pub fn events_csv(events: &[Event], resolution: f64, burst_gap: f64) -> String {
 }
 
 /// The events described, per switch and kind, in capture order.
-pub type Groups<'a> = BTreeMap<(&'a str, Kind), Vec<capture::Description>>;
+pub type Groups<'a> = BTreeMap<(&'a str, Edge), Vec<capture::Description>>;
 
 /// Describes every event at `resolution` (a quiet interval of `burst_gap` ending a burst) and
 /// groups them per switch and kind.
@@ -98,7 +99,7 @@ mod tests {
             Event {
                 switch: "a \"b\", c".into(),
                 origin: "line 3".into(),
-                kind: Kind::Press,
+                kind: Edge::Press,
                 // closed 10 us, open 1 us (chatter), closed 20 us, open 9 ms (quiet: a second
                 // burst), closed 30 us.
                 changes: vec![0.0, 10e-6, 11e-6, 31e-6, 9.031e-3, 9.061e-3],
@@ -107,7 +108,7 @@ mod tests {
             Event {
                 switch: "x".into(),
                 origin: String::new(),
-                kind: Kind::Release,
+                kind: Edge::Release,
                 changes: vec![1.0],
                 section: None,
             },

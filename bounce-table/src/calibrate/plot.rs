@@ -2,7 +2,8 @@
 
 use super::fit::{BounceModel, ImpactFit};
 use super::sorted;
-use crate::capture::{self, Kind};
+use crate::capture::EdgeName;
+use crate::capture::{self, Edge};
 use crate::plot::{time, Axis, Marker, Plot, Quantity, Series, Style};
 
 /// The SVG of one switch and kind: the observed bounce's cumulative distribution against the
@@ -10,7 +11,7 @@ use crate::plot::{time, Axis, Marker, Plot, Quantity, Series, Style};
 /// flight / (1 - R), fitted on all events), on a log time axis, with the window recommended
 /// at `percentile` (0..1) marked. Clean edges (no bounce) are left out and counted in the title.
 #[must_use]
-pub fn plot(switch: &str, kind: Kind, d: &[capture::Description], percentile: f64) -> String {
+pub fn plot(switch: &str, kind: Edge, d: &[capture::Description], percentile: f64) -> String {
     let refs: Vec<&capture::Description> = d.iter().collect();
     let fit = ImpactFit::new(&refs);
     let cdf = |v: Vec<f64>| -> Vec<(f64, f64)> {

@@ -8,6 +8,7 @@ use super::heldout::{
 use super::window::{chronological_cover, earlier_count, window, Cover, FAR_BEYOND, MIN_EVENTS};
 use super::{sorted, Groups};
 use crate::capture;
+use crate::capture::EdgeName;
 use crate::output::time;
 use contact_bounce_reference::stats::nearest_rank;
 
@@ -382,8 +383,8 @@ pub fn summary(groups: &Groups<'_>, percentile: f64, burst_gap: f64, cap: Option
             )
         };
         let kinds = match kind {
-            capture::Kind::Press => "presses",
-            capture::Kind::Release => "releases",
+            capture::Edge::Press => "presses",
+            capture::Edge::Release => "releases",
         };
         // Capped: the later events the capped earlier-half window still covers.
         let covered = match cap {

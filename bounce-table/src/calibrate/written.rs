@@ -2,6 +2,7 @@
 //! the report. The desk tool and anything else that has the capture in memory call this.
 
 use super::{Loaded, Options};
+use crate::capture::EdgeName;
 use crate::output::clash;
 use crate::strict::printable;
 

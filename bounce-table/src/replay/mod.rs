@@ -17,12 +17,13 @@
 pub mod peers;
 pub use peers::peers;
 
+use crate::capture::EdgeName;
 use std::collections::BTreeMap;
 
 use contact_bounce::{Mode, State, Windows};
 
 use crate::calibrate::{self, window};
-use crate::capture::{Event, Kind};
+use crate::capture::{Edge, Event};
 use crate::output::time;
 use crate::plot::{Axis, Plot, Quantity, Series, Style};
 use crate::priors::{self, Prior};
@@ -43,7 +44,7 @@ impl Trace {
     pub fn of(e: &Event, scale: f64) -> Self {
         let t0 = e.changes.first().copied().unwrap_or(0.0);
         Self {
-            closed_before: e.kind == Kind::Release,
+            closed_before: e.kind == Edge::Release,
             changes: e.changes.iter().map(|t| (t - t0) * scale).collect(),
         }
     }
@@ -234,7 +235,7 @@ impl Score {
 /// Our debouncer in both modes with `press` and `release` windows (s) at `period`; `None` when
 /// a window does not fit [`Windows::MAX_TICKS`] samples.
 #[must_use]
-pub fn ours(label: &str, press: f64, release: f64, period: f64, kind: Kind) -> Option<Vec<Row>> {
+pub fn ours(label: &str, press: f64, release: f64, period: f64, kind: Edge) -> Option<Vec<Row>> {
     // The core's rounding (up); a window of 0 (every test clean) is one sample.
     let ticks = |w: f64| -> Option<u16> {
         let t = if w > 0.0 {
@@ -247,7 +248,7 @@ pub fn ours(label: &str, press: f64, release: f64, period: f64, kind: Kind) -> O
             .filter(|t| *t <= Windows::MAX_TICKS)
     };
     let (p, r) = (ticks(press)?, ticks(release)?);
-    let shown = if kind == Kind::Press { press } else { release };
+    let shown = if kind == Edge::Press { press } else { release };
     Some(
         [("hold-off", Mode::HoldOff), ("confirm", Mode::Confirm)]
             .into_iter()
@@ -293,7 +294,7 @@ pub struct Line {
     /// The switch.
     pub switch: String,
     /// Press or release.
-    pub kind: Kind,
+    pub kind: Edge,
     /// The debouncer.
     pub debouncer: String,
     /// Its window for this kind (s).
@@ -319,8 +320,8 @@ pub fn calibrated(
     events: &[Event],
     c: &calibrate::Options,
     s: &Settings,
-) -> BTreeMap<(String, Kind), f64> {
-    let mut by: BTreeMap<(&str, Kind), Vec<&Event>> = BTreeMap::new();
+) -> BTreeMap<(String, Edge), f64> {
+    let mut by: BTreeMap<(&str, Edge), Vec<&Event>> = BTreeMap::new();
     for e in events {
         by.entry((e.switch.as_str(), e.kind)).or_default().push(e);
     }
@@ -353,7 +354,7 @@ pub fn calibrated(
 /// # Errors
 /// A calibrated or prior window longer than our debouncer's counter holds at `period`.
 pub fn run(events: &[Event], c: &calibrate::Options, s: &Settings) -> Result<Vec<Line>, String> {
-    let mut by: BTreeMap<(&str, Kind), Vec<&Event>> = BTreeMap::new();
+    let mut by: BTreeMap<(&str, Edge), Vec<&Event>> = BTreeMap::new();
     for e in events {
         by.entry((e.switch.as_str(), e.kind)).or_default().push(e);
     }
@@ -385,8 +386,8 @@ pub fn run(events: &[Event], c: &calibrate::Options, s: &Settings) -> Result<Vec
         };
         let mut rows = ours(
             "calibrated",
-            both(Kind::Press),
-            both(Kind::Release),
+            both(Edge::Press),
+            both(Edge::Release),
             s.period,
             kind,
         )
@@ -470,7 +471,7 @@ pub struct CurvePoint {
     /// The test's number among the switch's tests, in capture order (from 1).
     pub test: usize,
     /// Press or release.
-    pub kind: Kind,
+    pub kind: Edge,
     /// The learned window of that kind after the test (s).
     pub window: f64,
     /// Reported edges beyond the test's one true edge.
@@ -483,7 +484,7 @@ pub struct CurvePoint {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Learning {
     /// Per kind: the score on the later tests and the window learned by the last test (s).
-    pub rows: Vec<(Kind, Score, f64)>,
+    pub rows: Vec<(Edge, Score, f64)>,
     /// Every test, in order.
     pub curve: Vec<CurvePoint>,
 }
@@ -496,10 +497,10 @@ pub struct Learning {
 /// The prior does not fit [`Windows::MAX_TICKS`] samples of `period`.
 pub fn learned(events: &[&Event], prior: f64, s: &Settings) -> Result<Learning, String> {
     let windows = learner_prior(prior, s.fastest_tap, s.period)?;
-    let count = |k: Kind| events.iter().filter(|e| e.kind == k).count();
+    let count = |k: Edge| events.iter().filter(|e| e.kind == k).count();
     let cuts =
-        [Kind::Press, Kind::Release].map(|k| (k, calibrate::earlier_count(count(k), s.split)));
-    let mut scores: Vec<(Kind, Score)> = [Kind::Press, Kind::Release]
+        [Edge::Press, Edge::Release].map(|k| (k, calibrate::earlier_count(count(k), s.split)));
+    let mut scores: Vec<(Edge, Score)> = [Edge::Press, Edge::Release]
         .iter()
         .map(|&k| {
             (
@@ -519,7 +520,7 @@ pub fn learned(events: &[&Event], prior: f64, s: &Settings) -> Result<Learning, 
     #[allow(clippy::cast_precision_loss)]
     let seconds = |t: u16| f64::from(t) * s.period;
     for (n, e) in events.iter().enumerate() {
-        let slot = usize::from(e.kind == Kind::Release);
+        let slot = usize::from(e.kind == Edge::Release);
         let i = seen[slot];
         seen[slot] += 1;
         // The later tests sample at the phases every other row's do (counted from the cut).
@@ -558,7 +559,7 @@ pub fn learned(events: &[&Event], prior: f64, s: &Settings) -> Result<Learning, 
         curve.push(CurvePoint {
             test: n + 1,
             kind: e.kind,
-            window: seconds(if e.kind == Kind::Press {
+            window: seconds(if e.kind == Edge::Press {
                 press
             } else {
                 release
@@ -572,7 +573,7 @@ pub fn learned(events: &[&Event], prior: f64, s: &Settings) -> Result<Learning, 
         rows: scores
             .into_iter()
             .map(|(k, score)| {
-                let w = if k == Kind::Press { press } else { release };
+                let w = if k == Edge::Press { press } else { release };
                 (k, score, seconds(w))
             })
             .collect(),
@@ -869,7 +870,7 @@ mod tests {
         let changes: Vec<f64> = (0..8).map(|i| f64::from(i) * 0.5e-3).collect();
         let t = trace(false, &changes[..7]);
         for (window, covers) in [(4e-3, true), (1e-3, false)] {
-            let mut rows = ours("x", window, window, 1e-4, Kind::Press).unwrap();
+            let mut rows = ours("x", window, window, 1e-4, Edge::Press).unwrap();
             let s = score(&mut rows[0], std::slice::from_ref(&t), 1e-4);
             assert_eq!(s.false_edges == 0, covers, "window {window}");
             assert!(s.latencies[0] <= 1e-4 + 1e-12);

@@ -21,6 +21,7 @@
 //! Several files in `files` are a folder's, read as the CLI reads a folder: `"switch"` names
 //! it (else the first file's name without its extension names the switch).
 
+use bounce_table::capture::EdgeName;
 use bounce_table::output::render_to;
 use bounce_table::scenes::Entries;
 use bounce_table::{calibrate, cli, eval, plot, replay, scope, table, taps};
