@@ -36,8 +36,10 @@ pub struct Preloaded<F> {
     pub closing_speed: F,
     /// Coefficient of restitution R.
     pub restitution: F,
-    /// Viscous damping ratio zeta (> 0: a preload without viscous damping is
-    /// `Scene::new(switch.contact(), Undamped)`, which links none of the damped code).
+    /// Viscous damping ratio zeta: > 0 for [`Preloaded::scene`] and [`Preloaded::window`] (a
+    /// preload without viscous damping is `Scene::new(switch.contact(), Undamped)`, which links
+    /// none of the damped code). The lean paths of [`tiers`](crate::tiers) also take 0
+    /// (`preload_viscous_bounce_time`), or only 0 (`preload_restitution_bounce_seconds`).
     pub damping_ratio: F,
 }
 
