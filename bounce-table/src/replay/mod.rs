@@ -12,7 +12,7 @@
 //! latency from the first contact change to the first reported edge (P50, P99 over the tests).
 //!
 //! The peers are re-implemented from their documentation, each at its documented default, one
-//! file each in [`peers`] (which says how to add one).
+//! file each in [`mod@peers`] (which says how to add one).
 
 pub mod peers;
 pub use peers::peers;

@@ -10,7 +10,7 @@
 //! To add a peer: write `<peer>.rs` here with its module docs (where its algorithm and default
 //! come from) and `pub fn rows(period: f64) -> Vec<Row>` (a polled debouncer implements
 //! [`Polled`] and is wrapped by [`polled`]; an interrupt-driven one is a
-//! [`Sampling::Interrupt`](crate::replay::Sampling::Interrupt)), then add its name to the
+//! [`Sampling::Interrupt`]), then add its name to the
 //! `peers!` line below. Its rows appear in every table, plot and tap replay, in that order.
 
 use crate::replay::{Polled, Row, Sampling};
@@ -31,8 +31,9 @@ macro_rules! peers {
 
 peers!(qmk, zmk, bounce2, debouncr, gpio_keys);
 
-/// A polled debouncer's row: its name, its window (s), sampled every `period` (s).
-pub(crate) fn polled(name: &str, window: f64, period: f64, d: Box<dyn Polled>) -> Row {
+/// A polled debouncer's row: its name, its window (s), sampled every `period` (s), as a peer's
+/// `rows` builds it.
+pub fn polled(name: &str, window: f64, period: f64, d: Box<dyn Polled>) -> Row {
     Row {
         name: name.to_owned(),
         window: Some(window),
