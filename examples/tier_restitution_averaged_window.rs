@@ -18,12 +18,8 @@ fn work() {
         // The dome as f32 constants, hidden from the optimiser (its damping left out).
         let d = core::hint::black_box(firmware::DOME);
         contact_bounce::tiers::preload_restitution_bounce_seconds(&contact_bounce::Preloaded {
-            mass: d.mass,
-            stiffness: d.stiffness,
-            preload_force: d.preload_force,
-            closing_speed: d.closing_speed,
-            restitution: d.restitution,
             damping_ratio: 0.0,
+            ..d
         })
         .and_then(|time| {
             contact_bounce::Window::from_seconds(

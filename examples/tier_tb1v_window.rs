@@ -17,22 +17,15 @@ fn work() {
     firmware::measure_without_scene(|| {
         // The dome as f32 constants, hidden from the optimiser.
         let d = core::hint::black_box(firmware::DOME);
-        contact_bounce::tiers::preload_viscous_bounce_seconds(&contact_bounce::Preloaded {
-            mass: d.mass,
-            stiffness: d.stiffness,
-            preload_force: d.preload_force,
-            closing_speed: d.closing_speed,
-            restitution: d.restitution,
-            damping_ratio: d.damping_ratio,
-        })
-        .and_then(|time| {
-            contact_bounce::Window::from_seconds(
-                time,
-                &contact_bounce::Margin::none(),
-                core::hint::black_box(1e-5),
-            )
-        })
-        .map_or(0, |w| w.ticks())
+        contact_bounce::tiers::preload_viscous_bounce_seconds(&d)
+            .and_then(|time| {
+                contact_bounce::Window::from_seconds(
+                    time,
+                    &contact_bounce::Margin::none(),
+                    core::hint::black_box(1e-5),
+                )
+            })
+            .map_or(0, |w| w.ticks())
     });
 }
 

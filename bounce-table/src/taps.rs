@@ -629,21 +629,12 @@ pub fn markdown(lines: &[TapLine], t: &TapSettings) -> String {
 /// (`<switch>-<regime>-taps.svg`, as `--plot DIR` writes them).
 #[must_use]
 pub fn plots(lines: &[TapLine]) -> Vec<(String, String)> {
-    let mut groups: std::collections::BTreeMap<(&str, &str), Vec<&TapLine>> =
-        std::collections::BTreeMap::new();
-    for l in lines {
-        groups
-            .entry((l.switch.as_str(), l.regime.name()))
-            .or_default()
-            .push(l);
-    }
-    groups
-        .into_iter()
-        .map(|((switch, regime), group)| {
-            let stem = crate::output::identifier(switch).to_lowercase();
-            (format!("{stem}-{regime}-taps.svg"), plot(&group))
-        })
-        .collect()
+    replay::per_group(
+        lines,
+        |l| (l.switch.as_str(), l.regime.name()),
+        "taps",
+        plot,
+    )
 }
 
 /// One switch and regime as an SVG: missed taps against false edges, ours and the peers apart,

@@ -940,25 +940,22 @@ fn raw_inputs<F: Float + std::fmt::Debug>(
         };
         let what = format!("{contact:?} zeta {z:?} kappa {kappa:?} tau {tau:?} tol {tol:?}");
         // The free functions and small constructors.
-        if let Ok(t) = preload_viscous_bounce_time(&contact_bounce::Preloaded {
+        let switch = contact_bounce::Preloaded {
             mass: a,
             stiffness: b,
             preload_force: c,
             closing_speed: e,
             restitution: d,
             damping_ratio: z,
-        }) {
+        };
+        if let Ok(t) = preload_viscous_bounce_time(&switch) {
             if !number(t.time) || t.expected_error.is_some_and(|x| !number(x)) {
                 faults.push(format!("preload_viscous_bounce_time {t:?}, {what}"));
             }
         }
         if let Ok(t) = preload_restitution_bounce_seconds(&contact_bounce::Preloaded {
-            mass: a,
-            stiffness: b,
-            preload_force: c,
-            closing_speed: e,
-            restitution: d,
             damping_ratio: F::ZERO,
+            ..switch
         }) {
             if !number(t) {
                 faults.push(format!("preload_restitution_bounce_seconds {t:?}, {what}"));
@@ -1683,6 +1680,44 @@ fn the_map_hands_a_kernels_stalled_flight_to_the_averaged_model() {
     }
 }
 
+/// The exact tier on a kernel scene in f32 (the contact as given, zeta and the kernel rounded
+/// to f32) and in f64 on the same rounded inputs: the regressions of the f32 kernel flights.
+fn exact_in_both_floats(
+    contact: Contact<f32>,
+    zeta: f64,
+    kernel: (f64, f64),
+) -> (Prediction<f32>, Prediction<f64>) {
+    let x = <f32 as Float>::from_f64;
+    let scene = Scene::new(
+        contact,
+        (
+            Viscous::optional(x(zeta)).unwrap_or_else(|_| unreachable!()),
+            Hereditary::exponential(x(kernel.0), x(kernel.1)).unwrap_or_else(|_| unreachable!()),
+        ),
+    )
+    .unwrap_or_else(|_| unreachable!());
+    let narrow = scene.predict(methods::<f32>()[TRUTH]);
+    let wide = wide_prediction(&contact, zeta, Some(kernel), methods::<f64>()[TRUTH])
+        .unwrap_or_else(|| unreachable!());
+    (narrow, wide)
+}
+
+/// Both state a figure, and the two brackets overlap.
+fn assert_figures_agree(narrow: &Prediction<f32>, wide: &Prediction<f64>) {
+    let (Some(t), Some(e), Some(u), Some(f)) = (
+        narrow.bounce_time(),
+        narrow.expected_error,
+        wide.bounce_time(),
+        wide.expected_error,
+    ) else {
+        panic!("{narrow:?} {wide:?}");
+    };
+    assert!(
+        agree(f64::from(t), f64::from(e), u, f),
+        "f32 {t} (error {e}) against f64 {u} (error {f})"
+    );
+}
+
 #[test]
 fn a_kernels_force_carries_its_modes_rounding_in_f32() {
     // Found by the widened harness's long run (FUZZ_SEED=20261205, f32 against f64):
@@ -1702,30 +1737,8 @@ fn a_kernels_force_carries_its_modes_rounding_in_f32() {
         1.869_784_332_186_547_5,
         (4.912_922_778_904_373e24, 1.837_420_786_488_032e-9),
     );
-    let scene = Scene::new(
-        contact,
-        (
-            Viscous::optional(x(zeta)).unwrap_or_else(|_| unreachable!()),
-            Hereditary::exponential(x(kernel.0), x(kernel.1)).unwrap_or_else(|_| unreachable!()),
-        ),
-    )
-    .unwrap_or_else(|_| unreachable!());
-    let method = methods::<f32>()[TRUTH];
-    let narrow = scene.predict(method);
-    let wide = wide_prediction(&contact, zeta, Some(kernel), methods::<f64>()[TRUTH])
-        .unwrap_or_else(|| unreachable!());
-    let (Some(t), Some(e), Some(u), Some(f)) = (
-        narrow.bounce_time(),
-        narrow.expected_error,
-        wide.bounce_time(),
-        wide.expected_error,
-    ) else {
-        panic!("{narrow:?} {wide:?}");
-    };
-    assert!(
-        agree(f64::from(t), f64::from(e), u, f),
-        "f32 {t} (error {e}) against f64 {u} (error {f})"
-    );
+    let (narrow, wide) = exact_in_both_floats(contact, zeta, kernel);
+    assert_figures_agree(&narrow, &wide);
 }
 
 #[test]
@@ -1744,18 +1757,7 @@ fn a_swing_rounding_cannot_part_from_the_stop_does_not_end_the_bounce_in_f32() {
         threshold: Threshold::FractionOfFirst(x(2.482_820_7e-4)),
     };
     let kernel = (1.730_979_390_008_927e10, 3.589_424_923_289_08e-6);
-    let scene = Scene::new(
-        contact,
-        (
-            Viscous::optional(0.0).unwrap_or_else(|_| unreachable!()),
-            Hereditary::exponential(x(kernel.0), x(kernel.1)).unwrap_or_else(|_| unreachable!()),
-        ),
-    )
-    .unwrap_or_else(|_| unreachable!());
-    let method = methods::<f32>()[TRUTH];
-    let narrow = scene.predict(method);
-    let wide = wide_prediction(&contact, 0.0, Some(kernel), methods::<f64>()[TRUTH])
-        .unwrap_or_else(|| unreachable!());
+    let (narrow, wide) = exact_in_both_floats(contact, 0.0, kernel);
     let (Some(t), Some(u)) = (narrow.bounce_time(), wide.bounce_time()) else {
         panic!("{narrow:?} {wide:?}");
     };
@@ -1790,27 +1792,6 @@ fn a_preload_force_nearly_cancelling_the_spring_states_the_first_flights_roundin
         threshold: Threshold::FractionOfFirst(0.019_319_903),
     };
     let kernel = (2.670_990_812_728_503e24, 5.136_577_636_199_736_4e-8);
-    let scene = Scene::new(
-        contact,
-        (
-            Viscous::optional(0.0).unwrap_or_else(|_| unreachable!()),
-            Hereditary::exponential(x(kernel.0), x(kernel.1)).unwrap_or_else(|_| unreachable!()),
-        ),
-    )
-    .unwrap_or_else(|_| unreachable!());
-    let narrow = scene.predict(methods::<f32>()[TRUTH]);
-    let wide = wide_prediction(&contact, 0.0, Some(kernel), methods::<f64>()[TRUTH])
-        .unwrap_or_else(|| unreachable!());
-    let (Some(t), Some(e), Some(u), Some(f)) = (
-        narrow.bounce_time(),
-        narrow.expected_error,
-        wide.bounce_time(),
-        wide.expected_error,
-    ) else {
-        panic!("{narrow:?} {wide:?}");
-    };
-    assert!(
-        agree(f64::from(t), f64::from(e), u, f),
-        "f32 {t} (error {e}) against f64 {u} (error {f})"
-    );
+    let (narrow, wide) = exact_in_both_floats(contact, 0.0, kernel);
+    assert_figures_agree(&narrow, &wide);
 }

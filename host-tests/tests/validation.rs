@@ -32,6 +32,25 @@ fn expect(contact: Contact<f64>, parameter: Parameter, reason: Reason) {
     assert_eq!(err(contact), Error::new(parameter, reason), "{contact:?}");
 }
 
+/// A preloaded switch from its six numbers, in `Preloaded`'s order (the tests' shorthand).
+fn lean_switch<F: contact_bounce::Float>(
+    mass: F,
+    stiffness: F,
+    preload_force: F,
+    closing_speed: F,
+    restitution: F,
+    damping_ratio: F,
+) -> contact_bounce::Preloaded<F> {
+    contact_bounce::Preloaded {
+        mass,
+        stiffness,
+        preload_force,
+        closing_speed,
+        restitution,
+        damping_ratio,
+    }
+}
+
 #[test]
 fn the_good_scene_is_accepted() {
     assert!(Scene::new(good(), Undamped).is_ok());
@@ -274,14 +293,7 @@ fn damping_ratio_must_be_finite_and_non_negative() {
         Ok(Some(0.03))
     );
     // A preload without damping: Preloaded is damped, so it names the parameter.
-    let undamped = contact_bounce::Preloaded {
-        mass: 5e-5,
-        stiffness: 5000.0,
-        preload_force: 1.0,
-        closing_speed: 0.5,
-        restitution: 0.7,
-        damping_ratio: 0.0,
-    };
+    let undamped = lean_switch(5e-5, 5000.0, 1.0, 0.5, 0.7, 0.0);
     assert_eq!(
         undamped.scene().map(|_| ()),
         Err(Error::new(Parameter::DampingRatio, Reason::NotPositive))
@@ -738,31 +750,14 @@ fn the_model_domain_is_enforced() {
 fn the_lean_t_b1v_agrees_with_the_scenes_and_refuses_what_the_scene_refuses() {
     use contact_bounce::{catalogue, tiers::preload_viscous_bounce_time};
     for d in catalogue::ALL {
-        let lean = preload_viscous_bounce_time(&contact_bounce::Preloaded {
-            mass: d.mass,
-            stiffness: d.stiffness,
-            preload_force: d.preload_force,
-            closing_speed: d.closing_speed,
-            restitution: d.restitution,
-            damping_ratio: d.damping_ratio,
-        })
-        .expect("valid");
+        let lean = preload_viscous_bounce_time(&d.preloaded::<f64>()).expect("valid");
         let full = d.scene::<f64>().expect("valid").t_b1v().expect("a preload");
         assert!((lean.time / full.time - 1.0).abs() < 1e-12, "{}", d.name);
         assert_eq!(lean.expected_error.is_some(), full.expected_error.is_some());
         if let (Some(a), Some(b)) = (lean.expected_error, full.expected_error) {
             assert!((a / b - 1.0).abs() < 1e-9, "{}", d.name);
         }
-        #[allow(clippy::cast_possible_truncation)]
-        let narrow = preload_viscous_bounce_time(&contact_bounce::Preloaded {
-            mass: d.mass as f32,
-            stiffness: d.stiffness as f32,
-            preload_force: d.preload_force as f32,
-            closing_speed: d.closing_speed as f32,
-            restitution: d.restitution as f32,
-            damping_ratio: d.damping_ratio as f32,
-        })
-        .expect("valid in f32");
+        let narrow = preload_viscous_bounce_time(&d.preloaded::<f32>()).expect("valid in f32");
         assert!(
             (f64::from(narrow.time) / full.time - 1.0).abs() < 1e-5,
             "{}",
@@ -771,16 +766,9 @@ fn the_lean_t_b1v_agrees_with_the_scenes_and_refuses_what_the_scene_refuses() {
     }
     let d = catalogue::TACTILE_DOME;
     let refused = |m: f64, k: f64, f: f64, v: f64, r: f64, z: f64| {
-        preload_viscous_bounce_time(&contact_bounce::Preloaded {
-            mass: m,
-            stiffness: k,
-            preload_force: f,
-            closing_speed: v,
-            restitution: r,
-            damping_ratio: z,
-        })
-        .map(|_| ())
-        .map_err(|e| e.parameter())
+        preload_viscous_bounce_time(&lean_switch(m, k, f, v, r, z))
+            .map(|_| ())
+            .map_err(|e| e.parameter())
     };
     let (m, k, f, v, r, z) = (
         d.mass,
@@ -801,14 +789,7 @@ fn the_lean_t_b1v_agrees_with_the_scenes_and_refuses_what_the_scene_refuses() {
     assert_eq!(refused(m, k, f, v, r, 0.0), Ok(()));
     // An acceleration scale Omega (1 + R) v0 beyond f32's largest value over 2^17 (Omega 2.6e16
     // rad/s at 1e30 m/s): both refuse it, naming the closing speed.
-    let lean = preload_viscous_bounce_time(&contact_bounce::Preloaded {
-        mass: 1e-30_f32,
-        stiffness: 651.0,
-        preload_force: 1e-3,
-        closing_speed: 1e30,
-        restitution: 0.7,
-        damping_ratio: 0.01,
-    });
+    let lean = preload_viscous_bounce_time(&lean_switch(1e-30_f32, 651.0, 1e-3, 1e30, 0.7, 0.01));
     assert_eq!(
         lean.map_err(|e| e.parameter()).map(|_| ()),
         Err(Parameter::ClosingSpeed)
@@ -850,15 +831,7 @@ fn a_bounce_shorter_than_the_smallest_normal_float_is_refused() {
         0.008_416_908,
     );
     fn preloaded<F: contact_bounce::Float>(m: F, k: F, f: F, v: F, r: F, z: F) -> Contact<F> {
-        contact_bounce::Preloaded {
-            mass: m,
-            stiffness: k,
-            preload_force: f,
-            closing_speed: v,
-            restitution: r,
-            damping_ratio: z,
-        }
-        .contact()
+        lean_switch(m, k, f, v, r, z).contact()
     }
     #[allow(clippy::cast_possible_truncation)]
     let narrow = |x: f64| x as f32;
@@ -878,28 +851,13 @@ fn a_bounce_shorter_than_the_smallest_normal_float_is_refused() {
         scene.map(|_| ()),
         Err(Error::new(Parameter::ClosingSpeed, Reason::Overflow))
     );
-    let lean = preload_viscous_bounce_time(&contact_bounce::Preloaded {
-        mass: mf,
-        stiffness: kf,
-        preload_force: ff,
-        closing_speed: vf,
-        restitution: rf,
-        damping_ratio: zf,
-    })
-    .map(|_| ());
+    let lean = preload_viscous_bounce_time(&lean_switch(mf, kf, ff, vf, rf, zf)).map(|_| ());
     assert_eq!(
         lean,
         Err(Error::new(Parameter::PreloadForce, Reason::Overflow))
     );
-    let lean = preload_restitution_bounce_seconds(&contact_bounce::Preloaded {
-        mass: mf,
-        stiffness: kf,
-        preload_force: ff,
-        closing_speed: vf,
-        restitution: rf,
-        damping_ratio: 0.0,
-    })
-    .map(|_| ());
+    let lean =
+        preload_restitution_bounce_seconds(&lean_switch(mf, kf, ff, vf, rf, 0.0)).map(|_| ());
     assert_eq!(
         lean,
         Err(Error::new(Parameter::PreloadForce, Reason::Overflow))
@@ -907,16 +865,9 @@ fn a_bounce_shorter_than_the_smallest_normal_float_is_refused() {
     let wide = Scene::new(preloaded(m, k, f, v, r, z), Viscous::new(z).expect("valid"))
         .expect("normal in f64");
     let t_b1v = wide.t_b1v().expect("a preload").time;
-    let lean = preload_viscous_bounce_time(&contact_bounce::Preloaded {
-        mass: m,
-        stiffness: k,
-        preload_force: f,
-        closing_speed: v,
-        restitution: r,
-        damping_ratio: z,
-    })
-    .expect("normal in f64")
-    .time;
+    let lean = preload_viscous_bounce_time(&lean_switch(m, k, f, v, r, z))
+        .expect("normal in f64")
+        .time;
     assert!((t_b1v / 6.623_237_8e-42 - 1.0).abs() < 1e-6, "{t_b1v:e}");
     assert!((lean / t_b1v - 1.0).abs() < 1e-12);
 }
@@ -938,22 +889,8 @@ fn the_lean_t_b1v_alone_is_the_estimates_time_at_every_scale() {
             #[allow(clippy::cast_possible_truncation)]
             let narrow = |x: f64| x as f32;
             let (mf, kf, ff, vf) = (narrow(m), narrow(k), narrow(f), narrow(v));
-            let lean = preload_viscous_bounce_time(&contact_bounce::Preloaded {
-                mass: mf,
-                stiffness: kf,
-                preload_force: ff,
-                closing_speed: vf,
-                restitution: 0.7,
-                damping_ratio: 0.03,
-            });
-            let alone = preload_viscous_bounce_seconds(&contact_bounce::Preloaded {
-                mass: mf,
-                stiffness: kf,
-                preload_force: ff,
-                closing_speed: vf,
-                restitution: 0.7,
-                damping_ratio: 0.03,
-            });
+            let lean = preload_viscous_bounce_time(&lean_switch(mf, kf, ff, vf, 0.7, 0.03));
+            let alone = preload_viscous_bounce_seconds(&lean_switch(mf, kf, ff, vf, 0.7, 0.03));
             assert_eq!(lean.map(|e| e.time), alone, "m {m:e} k {k:e}");
             let Ok(time) = alone else { continue };
             let ratio = mf / kf;
@@ -962,15 +899,8 @@ fn the_lean_t_b1v_alone_is_the_estimates_time_at_every_scale() {
             } else {
                 both_paths.1 += 1;
             }
-            let wide = preload_viscous_bounce_time(&contact_bounce::Preloaded {
-                mass: m,
-                stiffness: k,
-                preload_force: f,
-                closing_speed: v,
-                restitution: r,
-                damping_ratio: z,
-            })
-            .expect("valid in f64");
+            let wide =
+                preload_viscous_bounce_time(&lean_switch(m, k, f, v, r, z)).expect("valid in f64");
             assert!(
                 (f64::from(time) / wide.time - 1.0).abs() < 1e-5,
                 "m {m:e} k {k:e}: {time:e} against {:e}",
@@ -990,15 +920,7 @@ fn the_lean_restitution_averaged_time_is_the_averaged_tiers_and_refuses_what_the
     // to 1e58 (both square-root paths of the checks).
     use contact_bounce::{catalogue, tiers::preload_restitution_bounce_seconds, Method, Nodes};
     let averaged = |m: f64, k: f64, f: f64, v: f64, r: f64| {
-        let contact = contact_bounce::Preloaded {
-            mass: m,
-            stiffness: k,
-            preload_force: f,
-            closing_speed: v,
-            restitution: r,
-            damping_ratio: 0.0,
-        }
-        .contact();
+        let contact = lean_switch(m, k, f, v, r, 0.0).contact();
         Scene::new(contact, Undamped)
             .expect("valid")
             .predict(Method::Averaged(Nodes::N8))
@@ -1017,28 +939,21 @@ fn the_lean_restitution_averaged_time_is_the_averaged_tiers_and_refuses_what_the
             d.restitution,
         );
         let full = averaged(m, k, f, v, r);
-        let lean = preload_restitution_bounce_seconds(&contact_bounce::Preloaded {
-            mass: m,
-            stiffness: k,
-            preload_force: f,
-            closing_speed: v,
-            restitution: r,
-            damping_ratio: 0.0,
-        })
-        .expect("valid");
+        let lean =
+            preload_restitution_bounce_seconds(&lean_switch(m, k, f, v, r, 0.0)).expect("valid");
         assert!(
             (lean / full - 1.0).abs() < 1e-12,
             "{}: {lean:e} vs {full:e}",
             d.name
         );
-        let single = preload_restitution_bounce_seconds(&contact_bounce::Preloaded {
-            mass: narrow(m),
-            stiffness: narrow(k),
-            preload_force: narrow(f),
-            closing_speed: narrow(v),
-            restitution: narrow(r),
-            damping_ratio: 0.0,
-        })
+        let single = preload_restitution_bounce_seconds(&lean_switch(
+            narrow(m),
+            narrow(k),
+            narrow(f),
+            narrow(v),
+            narrow(r),
+            0.0,
+        ))
         .expect("valid in f32");
         assert!((f64::from(single) / full - 1.0).abs() < 1e-5, "{}", d.name);
     }
@@ -1051,14 +966,14 @@ fn the_lean_restitution_averaged_time_is_the_averaged_tiers_and_refuses_what_the
             // j0 from 0.2 (below the reflection of Ti2) to 20 (above it).
             for share in [0.1, 10.0] {
                 let v = share * f / (k * m).sqrt();
-                let single = preload_restitution_bounce_seconds(&contact_bounce::Preloaded {
-                    mass: narrow(m),
-                    stiffness: narrow(k),
-                    preload_force: narrow(f),
-                    closing_speed: narrow(v),
-                    restitution: 0.7,
-                    damping_ratio: 0.0,
-                });
+                let single = preload_restitution_bounce_seconds(&lean_switch(
+                    narrow(m),
+                    narrow(k),
+                    narrow(f),
+                    narrow(v),
+                    0.7,
+                    0.0,
+                ));
                 let Ok(time) = single else { continue };
                 let wide = averaged(m, k, f, v, 0.7);
                 assert!(
@@ -1079,16 +994,9 @@ fn the_lean_restitution_averaged_time_is_the_averaged_tiers_and_refuses_what_the
         d.restitution,
     );
     let refused = |m: f64, k: f64, f: f64, v: f64, r: f64| {
-        preload_restitution_bounce_seconds(&contact_bounce::Preloaded {
-            mass: m,
-            stiffness: k,
-            preload_force: f,
-            closing_speed: v,
-            restitution: r,
-            damping_ratio: 0.0,
-        })
-        .map(|_| ())
-        .map_err(|e| e.parameter())
+        preload_restitution_bounce_seconds(&lean_switch(m, k, f, v, r, 0.0))
+            .map(|_| ())
+            .map_err(|e| e.parameter())
     };
     assert_eq!(refused(0.0, k, f, v, r), Err(Parameter::Mass));
     assert_eq!(refused(m, f64::NAN, f, v, r), Err(Parameter::Stiffness));
@@ -1103,14 +1011,7 @@ fn the_lean_restitution_averaged_time_is_the_averaged_tiers_and_refuses_what_the
     // A damping ratio the path would leave out of the time is refused, by name (a NaN too);
     // 0 is the path's own.
     for zeta in [0.03, 1e-12, f64::NAN] {
-        let damped = preload_restitution_bounce_seconds(&contact_bounce::Preloaded {
-            mass: m,
-            stiffness: k,
-            preload_force: f,
-            closing_speed: v,
-            restitution: r,
-            damping_ratio: zeta,
-        });
+        let damped = preload_restitution_bounce_seconds(&lean_switch(m, k, f, v, r, zeta));
         assert_eq!(
             damped.map(|_| ()).map_err(|e| e.parameter()),
             Err(Parameter::DampingRatio),
@@ -1118,14 +1019,14 @@ fn the_lean_restitution_averaged_time_is_the_averaged_tiers_and_refuses_what_the
         );
     }
     // The first impulse below the floor, as the scene (and the lean t_b1v) refuse it.
-    let floor = preload_restitution_bounce_seconds(&contact_bounce::Preloaded {
-        mass: 1000.0_f32,
-        stiffness: 1e-30,
-        preload_force: 1.0,
-        closing_speed: 1e-30,
-        restitution: 1.0 - 4.335_312e-5,
-        damping_ratio: 0.0,
-    });
+    let floor = preload_restitution_bounce_seconds(&lean_switch(
+        1000.0_f32,
+        1e-30,
+        1.0,
+        1e-30,
+        1.0 - 4.335_312e-5,
+        0.0,
+    ));
     assert_eq!(
         floor.map_err(|e| e.parameter()),
         Err(Parameter::ClosingSpeed)
@@ -1152,14 +1053,14 @@ fn a_first_impulse_below_the_floor_is_refused() {
         (Parameter::ClosingSpeed, Reason::Overflow)
     );
     // The lean closed form takes the same domain.
-    let lean = contact_bounce::tiers::preload_viscous_bounce_time(&contact_bounce::Preloaded {
-        mass: 1000.0_f32,
-        stiffness: 1e-30,
-        preload_force: 1.0,
-        closing_speed: 1e-30,
-        restitution: 1.0 - 4.335_312e-5,
-        damping_ratio: 0.0,
-    })
+    let lean = contact_bounce::tiers::preload_viscous_bounce_time(&lean_switch(
+        1000.0_f32,
+        1e-30,
+        1.0,
+        1e-30,
+        1.0 - 4.335_312e-5,
+        0.0,
+    ))
     .expect_err("refused");
     assert_eq!(lean.parameter(), Parameter::ClosingSpeed);
     // The same in f64 is well inside its range, and accepted.

@@ -698,19 +698,31 @@ pub fn markdown(lines: &[Line]) -> String {
 /// (`<switch>-<kind>-replay.svg`, as `--plot DIR` writes them).
 #[must_use]
 pub fn plots(lines: &[Line]) -> Vec<(String, String)> {
-    let mut groups: std::collections::BTreeMap<(&str, &str), Vec<&Line>> =
-        std::collections::BTreeMap::new();
-    for l in lines {
-        groups
-            .entry((l.switch.as_str(), l.kind.name()))
-            .or_default()
-            .push(l);
+    per_group(
+        lines,
+        |l| (l.switch.as_str(), l.kind.name()),
+        "replay",
+        plot,
+    )
+}
+
+/// `rows` grouped by their switch and a group name (`key`), in order of both, each group drawn
+/// by `draw` and named `<switch>-<group>-<suffix>.svg`: the files `--plot DIR` writes.
+pub(crate) fn per_group<'a, L>(
+    rows: &'a [L],
+    key: impl Fn(&'a L) -> (&'a str, &'static str),
+    suffix: &str,
+    draw: impl Fn(&[&L]) -> String,
+) -> Vec<(String, String)> {
+    let mut groups: BTreeMap<(&str, &str), Vec<&L>> = BTreeMap::new();
+    for row in rows {
+        groups.entry(key(row)).or_default().push(row);
     }
     groups
         .into_iter()
-        .map(|((switch, kind), group)| {
+        .map(|((switch, group), members)| {
             let stem = crate::output::identifier(switch).to_lowercase();
-            (format!("{stem}-{kind}-replay.svg"), plot(&group))
+            (format!("{stem}-{group}-{suffix}.svg"), draw(&members))
         })
         .collect()
 }
