@@ -13,7 +13,8 @@ mod debouncers;
 #[cfg(target_os = "none")]
 mod firmware {
     use contact_bounce::{
-        catalogue, tiers::DEFAULT_MAX_IMPACTS, tiers::EXACT_MAX_IMPACTS, Method, Nodes, Tolerance,
+        scene::catalogue, tiers::DEFAULT_MAX_IMPACTS, tiers::EXACT_MAX_IMPACTS, Method, Nodes,
+        Tolerance,
     };
     use core::hint::black_box;
     use cortex_m as _;

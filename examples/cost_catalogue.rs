@@ -4,13 +4,13 @@
 //! dome with R = 0.9 and 0.95 (more impacts), and the dome with a relaxation kernel instead of
 //! viscous damping (five kernels and restitutions). Per scene: validation, then closed, averaged
 //! N8, the map, the exact tier, Auto at 10 % and at 1 %. `Method::Auto` weighs the tiers by
-//! costs measured here (`src/method.rs`, `src/exact/mod.rs`). On the host it does nothing.
+//! costs measured here (`src/tiers/method.rs`, `src/tiers/exact/mod.rs`). On the host it does nothing.
 #![cfg_attr(target_os = "none", no_std, no_main)]
 
 #[cfg(target_os = "none")]
 mod firmware {
     use contact_bounce::{
-        catalogue, tiers::DEFAULT_MAX_IMPACTS, tiers::EXACT_MAX_IMPACTS, Contact, Frequency,
+        scene::catalogue, tiers::DEFAULT_MAX_IMPACTS, tiers::EXACT_MAX_IMPACTS, Contact, Frequency,
         Hereditary, Method, Nodes, Offset, Restitution, Scene, Threshold, Tolerance, Viscous,
     };
     use core::hint::black_box;

@@ -15,7 +15,7 @@ mod firmware {
     use cortex_m_semihosting::debug;
     use panic_halt as _;
 
-    use contact_bounce::matrix::LearningMatrix;
+    use contact_bounce::debounce::matrix::LearningMatrix;
     use core::mem::size_of;
 
     // What each matrix keeps in RAM, as symbols whose size the report reads (`llvm-nm -S`): ours

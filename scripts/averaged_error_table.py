@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Regenerate src/accuracy/zeno_table.rs: the averaged tier's error on an undamped preload.
+"""Regenerate src/tiers/accuracy/zeno_table.rs: the averaged tier's error on an undamped preload.
 
 For zeta = 0 both sides are known exactly (docs/physics.md sec. 3 and 5): the averaged accumulation
 time is (2 / (r Omega)) Ti2(j0/2) and the exact one (2/Omega) sum_n atan((j0/2) R^n), so their
@@ -10,7 +10,7 @@ Simulation had suggested "within 1 % for j0 <= 1 for every R in [0.05, 0.999]": 
 shows +4.7 % at R = 0.05, j0 = 1 (and +126 % at R = 0.05, j0 = 100, not +74 %); docs/physics.md
 sec. 6 states the computed figures.
 
-Usage: python3 scripts/averaged_error_table.py > src/accuracy/zeno_table.rs
+Usage: python3 scripts/averaged_error_table.py > src/tiers/accuracy/zeno_table.rs
 """
 import mpmath as mp
 

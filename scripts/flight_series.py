@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
-"""Regenerate src/exact/flight_series.rs: one preloaded flight as power series in its
+"""Regenerate src/numeric/flight_series.rs: one preloaded flight as power series in its
 departure speed, each coefficient a polynomial in the damping ratio (exact rationals).
 
-Usage: python3 scripts/flight_series.py | rustfmt --edition 2021 > src/exact/flight_series.rs
+Usage: python3 scripts/flight_series.py | rustfmt --edition 2021 > src/numeric/flight_series.rs
 
 In units of the stop's scale (Omega = 1, |Delta| = 1, Delta < 0), a flight leaves the stop at
 speed eps: y = x - Delta solves y'' + 2 zeta y' + y + Delta = 0 with y(0) = 0, y'(0) = -eps.

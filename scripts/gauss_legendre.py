@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""Regenerate src/quadrature/table.rs: Gauss-Legendre rules on [-1, 1] to 40 digits (mpmath).
+"""Regenerate src/numeric/quadrature/table.rs: Gauss-Legendre rules on [-1, 1] to 40 digits (mpmath).
 
-Usage: python3 scripts/gauss_legendre.py > src/quadrature/table.rs
+Usage: python3 scripts/gauss_legendre.py > src/numeric/quadrature/table.rs
 """
 import mpmath as mp
 

@@ -109,7 +109,7 @@ cortex-m-rt = "0.7"
 panic-halt = "1"
 TOML
 printf '[target.thumbv7m-none-eabi]\nrustflags = ["-C", "link-arg=-Tlink.x"]\n' > "$app/.cargo/config.toml"
-printf '#![no_std]\n#![no_main]\nuse panic_halt as _;\n#[cortex_m_rt::entry]\nfn main() -> ! {\n    let _ = contact_bounce::window::window_ticks(1e-3, 1.5, 1e-4);\n    loop {}\n}\n' > "$app/src/main.rs"
+printf '#![no_std]\n#![no_main]\nuse panic_halt as _;\n#[cortex_m_rt::entry]\nfn main() -> ! {\n    let _ = contact_bounce::debounce::window::window_ticks(1e-3, 1.5, 1e-4);\n    loop {}\n}\n' > "$app/src/main.rs"
 if (cd "$app" && cargo build --quiet --release --target thumbv7m-none-eabi > "$app/log" 2>&1); then
   echo "FAIL: a dependent firmware without memory.x linked (it was given ours)" >&2
   exit 1
@@ -170,11 +170,14 @@ python3 web/tests/browser.py
 step "the repository stands alone: every citation points inside it"
 python3 scripts/doc-links.py
 
+step "the core's layers: imports run down numeric, physics, scene, tiers, debounce, with no loop"
+python3 scripts/layers.py
+
 step "generated tables are current"
 # (the committed files are the generators' output as rustfmt leaves it)
-python3 scripts/gauss_legendre.py | rustfmt --edition 2021 | diff - src/quadrature/table.rs
-python3 scripts/averaged_error_table.py | rustfmt --edition 2021 | diff - src/accuracy/zeno_table.rs
-python3 scripts/flight_series.py | rustfmt --edition 2021 | diff - src/exact/flight_series.rs
+python3 scripts/gauss_legendre.py | rustfmt --edition 2021 | diff - src/numeric/quadrature/table.rs
+python3 scripts/averaged_error_table.py | rustfmt --edition 2021 | diff - src/tiers/accuracy/zeno_table.rs
+python3 scripts/flight_series.py | rustfmt --edition 2021 | diff - src/numeric/flight_series.rs
 
 step "measured tables are current (docs/ regenerates identically)"
 cargo run --quiet --release -p host-tests --bin error-table | diff - docs/error-table.md

@@ -24,13 +24,19 @@
 //!
 //! # Where things are
 //!
-//! - [`scene`]: what a switch is. [`Scene`] is validated once from a [`Contact`] and the
-//!   mechanisms that dissipate between impacts ([`Undamped`], [`Viscous`], [`Hereditary`]);
-//!   after [`Scene::new`] succeeds nothing can fail, panic or return NaN. The mechanisms are
-//!   part of the scene's type, and so can be the sign of its offset: a scene from
-//!   [`Scene::new_preload`] (or [`Scene::new_gap`]) links none of the other side's code.
-//!   [`Preloaded`] is the short path for the common preloaded switch, [`catalogue`] holds
-//!   typical switches (both give preload-typed scenes).
+//! Five layers, lowest first; each module uses only its own layer and those below it.
+//!
+//! - [`numeric`]: the arithmetic every tier uses: the sealed [`Float`] over `f32` and `f64`,
+//!   the constants each float is tuned with, Gauss-Legendre [`Nodes`].
+//! - [`physics`]: what a contact does: the generating orbit, the dissipation mechanisms
+//!   ([`Undamped`], [`Viscous`], [`Hereditary`]) and the averaged equation's terms, the damped
+//!   flight between two impacts, the regimes. For those who build on the model's parts.
+//! - [`scene`]: what a switch is. [`Scene`] is validated once from a [`Contact`] and its
+//!   mechanisms; after [`Scene::new`] succeeds nothing can fail, panic or return NaN. The
+//!   mechanisms are part of the scene's type, and so can be the sign of its offset: a scene
+//!   from [`Scene::new_preload`] (or [`Scene::new_gap`]) links none of the other side's code.
+//!   [`Preloaded`] is the short path for the common preloaded switch, [`scene::catalogue`]
+//!   holds typical switches (both give preload-typed scenes).
 //! - [`tiers`]: how to predict. [`Scene::predict`] with a [`Method`]: the closed forms
 //!   (nanoseconds), the averaged model, the per-impact map, the exact solution, or
 //!   [`Method::Auto`], the cheapest tier that promises a [`Tolerance`] (and
@@ -38,16 +44,14 @@
 //!   [`Prediction`] with its expected error. The leanest firmware takes a preload's inputs
 //!   straight to a time, with no `Scene`: [`tiers::preload_viscous_bounce_seconds`] (t_b1v) and
 //!   [`tiers::preload_restitution_bounce_seconds`] (the averaged model with restitution alone).
-//! - [`window`]: from a prediction to a [`Window`] in ticks, widened by a [`Margin`]; also as
-//!   `const fn`, so a window can be fixed at compile time. [`Window::from_scene`] (and
-//!   [`Scene::bounce_time`]) take a scene and a method straight to the window: the same one,
-//!   without the counts and expected error a prediction carries, whose code is then not linked.
-//! - [`debounce`]: a [`Debouncer`] on such windows (2 bytes of [`State`] per pin, integer-only),
-//!   and [`learn`]: a [`LearningDebouncer`] that learns its own switch from a prior window.
-//! - [`matrix`]: a keyboard matrix ([`matrix::LearningMatrix`]) whose keys learn their switch
-//!   once for all of them, in a byte and three bits a key.
-//! - [`model`]: the parts of the averaged model (the generating orbit, the averaged equation's
-//!   terms) for those who build on them.
+//! - [`debounce`]: from a prediction to a [`Window`] in ticks, widened by a [`Margin`]
+//!   ([`debounce::window`], also as `const fn`, so a window can be fixed at compile time;
+//!   [`Window::from_scene`] and [`Scene::bounce_time`] take a scene and a method straight to
+//!   the window, without the counts and expected error a prediction carries, whose code is then
+//!   not linked); a [`Debouncer`] on such windows (2 bytes of [`State`] per pin,
+//!   integer-only); a [`LearningDebouncer`] that learns its own switch from a prior window
+//!   ([`debounce::learn`]); a keyboard matrix whose keys learn their switch once for all of them
+//!   ([`debounce::matrix::LearningMatrix`], a byte and three bits a key).
 //!
 //! Every invalid input is an [`Error`] naming the [`Parameter`] and the [`Reason`].
 //!
@@ -87,46 +91,24 @@
     clippy::return_self_not_must_use
 )]
 
-mod accuracy;
-mod averaged;
-pub mod catalogue;
-mod closed;
+// The layers, lowest first: each imports only from itself and the layers below it
+// (`scripts/layers.py` checks it).
 pub mod debounce;
-mod error;
-mod exact;
-mod float;
-pub mod learn;
-mod map;
-pub mod matrix;
-mod mechanisms;
-mod method;
-pub mod model;
-mod orbit;
-mod prediction;
-mod preloaded;
-mod quadrature;
-mod regime;
+pub mod numeric;
+pub mod physics;
 pub mod scene;
-mod sign;
 pub mod tiers;
-mod tuning;
-#[cfg(feature = "async")]
-#[cfg_attr(docsrs, doc(cfg(feature = "async")))]
-pub mod wait;
-pub mod window;
 
 // The names most programs need, at the root; everything else in its module.
-pub use debounce::{Debouncer, Edge, Mode, State, Windows};
-pub use error::{Error, Parameter, Reason};
-pub use float::Float;
-pub use learn::{LearnerPrior, LearningDebouncer, LearningState};
-pub use mechanisms::{Hereditary, Undamped, Viscous};
-pub use method::{Method, Tolerance};
-pub use prediction::Prediction;
-pub use preloaded::Preloaded;
-pub use quadrature::Nodes;
-pub use scene::{Contact, Frequency, Offset, Restitution, Scene, Threshold};
-pub use window::{Margin, Window};
+pub use debounce::learn::{LearnerPrior, LearningDebouncer, LearningState};
+pub use debounce::{Debouncer, Edge, Margin, Mode, State, Window, Windows};
+pub use numeric::{Float, Nodes};
+pub use physics::error::{Error, Parameter, Reason};
+pub use scene::{
+    Contact, Frequency, Hereditary, Offset, Preloaded, Restitution, Scene, Threshold, Undamped,
+    Viscous,
+};
+pub use tiers::{Method, Prediction, Tolerance};
 
 /// The README's examples, compiled and run as doctests (the crate's docs are the ones above).
 #[cfg(doctest)]

@@ -47,7 +47,7 @@ impl std::fmt::Display for FileError {
 /// ([`crate::priors::CATALOGUE_RANGES`]): their windows are a high percentile over those ranges.
 #[must_use]
 pub fn catalogue() -> Vec<Entry> {
-    contact_bounce::catalogue::ALL
+    contact_bounce::scene::catalogue::ALL
         .iter()
         .filter_map(|s| {
             let r = crate::priors::CATALOGUE_RANGES;

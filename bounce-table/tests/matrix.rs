@@ -1,4 +1,4 @@
-//! The core's keyboard matrix (`contact_bounce::matrix::LearningMatrix`) typed on: 100 keys of
+//! The core's keyboard matrix (`contact_bounce::debounce::matrix::LearningMatrix`) typed on: 100 keys of
 //! one switch, two hands tapping random keys of their half with human timing, every key's
 //! contact spliced from a switch's press and release waveforms (`taps::sequence`). Scored per
 //! key as the tap replay scores one key (`TapScore`): no tap may be lost, and the shared
@@ -12,7 +12,7 @@ use bounce_table::capture;
 use bounce_table::priors;
 use bounce_table::replay::{learner_prior, Trace};
 use bounce_table::taps::{self, Regime, Sequence, Tap, TapScore, Waveforms, FASTEST_TAP};
-use contact_bounce::matrix::{KeyEvent, LearningMatrix, MATRIX_WARM_UP};
+use contact_bounce::debounce::matrix::{KeyEvent, LearningMatrix, MATRIX_WARM_UP};
 use contact_bounce::{Edge, LearnerPrior, LearningState};
 
 /// One scan a millisecond, as keyboard firmware scans.
@@ -181,7 +181,7 @@ fn hand_prior() -> (LearnerPrior, f64) {
     hand_prior_at(PERIOD)
 }
 
-/// The window `m` scans of bounce ask for (`contact_bounce::learn`): `m + (m - 1) / 2`.
+/// The window `m` scans of bounce ask for (`contact_bounce::debounce::learn`): `m + (m - 1) / 2`.
 fn grow(m: u16) -> u16 {
     if m == 0 {
         1

@@ -23,7 +23,7 @@
 #![allow(non_camel_case_types)]
 
 use contact_bounce::{
-    learn::Learned,
+    debounce::learn::Learned,
     scene::{AnySign, OffsetSign, Preload, Regime},
     tiers::preload_restitution_bounce_seconds,
     tiers::preload_viscous_bounce_seconds,
@@ -1018,7 +1018,7 @@ pub struct cb_learner_prior {
 
 /// The fastest real tap by default, nanoseconds: 16 taps a second, 31 ms down and 31 ms up.
 pub const CB_FASTEST_TAP_NS: u32 = 31_000_000;
-const _: () = assert!(CB_FASTEST_TAP_NS == contact_bounce::learn::FASTEST_TAP_NS);
+const _: () = assert!(CB_FASTEST_TAP_NS == contact_bounce::debounce::learn::FASTEST_TAP_NS);
 
 fn learner_prior(p: cb_learner_prior) -> Result<LearnerPrior, cb_error> {
     LearnerPrior::new(p.press, p.release, p.fastest_tap).map_err(cb_error::from)

@@ -1,6 +1,6 @@
 // Measured on the Uno: scene validation, then the averaged tier with 4 and with 8 nodes.
 
-use contact_bounce::{catalogue, Method, Nodes};
+use contact_bounce::{scene::catalogue, Method, Nodes};
 use core::hint::black_box;
 
 pub fn run(mark: extern "C" fn(u8)) {

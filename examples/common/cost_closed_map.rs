@@ -1,7 +1,7 @@
 // Measured on the Uno: scene validation, the closed and map tiers, then 1000 debouncer samples,
 // ours and debouncr's (16-sample), and the sample loop alone.
 
-use contact_bounce::{catalogue, tiers::DEFAULT_MAX_IMPACTS, Method};
+use contact_bounce::{scene::catalogue, tiers::DEFAULT_MAX_IMPACTS, Method};
 use core::hint::black_box;
 
 pub fn run(mark: extern "C" fn(u8)) {

@@ -1,7 +1,7 @@
 // Measured on the Uno: scene validation, then the exact tier (the method is a constant, so
 // only the exact tier is linked).
 
-use contact_bounce::{catalogue, tiers::EXACT_MAX_IMPACTS, Method};
+use contact_bounce::{scene::catalogue, tiers::EXACT_MAX_IMPACTS, Method};
 use core::hint::black_box;
 
 pub fn run(mark: extern "C" fn(u8)) {

@@ -2,7 +2,7 @@
 // Zeno tail (what fits the Uno: the map's full prediction links the averaged hand-over), then
 // 1000 debouncer samples, ours and debouncr's (16-sample), and the sample loop alone.
 
-use contact_bounce::{catalogue, tiers::MapImpacts, tiers::DEFAULT_MAX_IMPACTS};
+use contact_bounce::{scene::catalogue, tiers::MapImpacts, tiers::DEFAULT_MAX_IMPACTS};
 use core::hint::black_box;
 
 pub fn run(mark: extern "C" fn(u8)) {

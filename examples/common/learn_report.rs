@@ -3,7 +3,7 @@
 // 20 ms prior, with the default fastest tap (31 ms, 3,100 samples). Each press gives one edge and each release one; the press window comes down to
 // 3/2 of the bounce it saw after 10 presses; what it learned is saved and restored.
 
-use contact_bounce::{learn::Learned, LearnerPrior, LearningState};
+use contact_bounce::{debounce::learn::Learned, LearnerPrior, LearningState};
 use core::fmt::Write;
 
 /// The recorded press (`samples` samples, 32 a word in `bits`, least significant first) at

@@ -5,7 +5,7 @@
 // byte each) and a QMK-like `sym_eager_pk` (below), each offering its events to the same kind of
 // `heapless::Vec`, and through the scan loop alone (subtracted by the report): `run_matrix`.
 
-use contact_bounce::matrix::{KeyEvent, LearningMatrix};
+use contact_bounce::debounce::matrix::{KeyEvent, LearningMatrix};
 use contact_bounce::{Edge, LearnerPrior};
 use core::hint::black_box;
 

@@ -2,7 +2,7 @@
 // only (formatting floats would pull ~30 KB of core::fmt into the firmware).
 
 use contact_bounce::{
-    catalogue, tiers::DEFAULT_MAX_IMPACTS, Float, Margin, Method, Nodes, Tolerance, Window,
+    scene::catalogue, tiers::DEFAULT_MAX_IMPACTS, Float, Margin, Method, Nodes, Tolerance, Window,
 };
 use core::fmt::Write;
 

@@ -1,7 +1,7 @@
 // The body of the per-tier size firmware: the tactile dome (viscous, f32) predicted with one
 // tier, inputs hidden from the optimiser. `METHOD` comes from the example including this.
 
-use contact_bounce::{catalogue, Margin, Window};
+use contact_bounce::{scene::catalogue, Margin, Window};
 use core::hint::black_box;
 
 pub fn run(method: contact_bounce::Method<f32>) -> u32 {

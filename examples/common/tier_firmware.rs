@@ -9,7 +9,7 @@
 
 use contact_bounce::scene::{Dissipation, OffsetSign, Preload};
 use contact_bounce::{
-    catalogue, Margin, Method, Prediction, Preloaded, Scene, Undamped, Viscous, Window,
+    scene::catalogue, Margin, Method, Prediction, Preloaded, Scene, Undamped, Viscous, Window,
 };
 use core::hint::black_box;
 

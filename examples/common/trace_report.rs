@@ -7,8 +7,8 @@ pub mod data;
 
 use contact_bounce::scene::OffsetSign;
 use contact_bounce::{
-    catalogue, debounce::Polarity, scene::Dissipation, Debouncer, Float, Margin, Method, Mode,
-    Scene, Tolerance, Undamped, Window, Windows,
+    debounce::Polarity, scene::catalogue, scene::Dissipation, Debouncer, Float, Margin, Method,
+    Mode, Scene, Tolerance, Undamped, Window, Windows,
 };
 use core::convert::Infallible;
 use core::fmt::Write;

@@ -4,7 +4,7 @@
 // (three tiers) needs more AVR flash than the Uno's 32 KB (`uno_cost_closed_map` in
 // docs/cost-report.md).
 
-use contact_bounce::{catalogue, tiers::MapImpacts, tiers::DEFAULT_MAX_IMPACTS, Float};
+use contact_bounce::{scene::catalogue, tiers::MapImpacts, tiers::DEFAULT_MAX_IMPACTS, Float};
 use core::fmt::Write;
 
 #[path = "dome_window.rs"]

@@ -8,7 +8,7 @@
 use std::hint::black_box;
 use std::time::Duration;
 
-use contact_bounce::{catalogue, tiers::EXACT_MAX_IMPACTS, Method, Nodes, Tolerance};
+use contact_bounce::{scene::catalogue, tiers::EXACT_MAX_IMPACTS, Method, Nodes, Tolerance};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use host_tests::grid::{grid, GridScene};
 use host_tests::reference::{simulate, DEFAULT_BUDGET};

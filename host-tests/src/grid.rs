@@ -169,7 +169,7 @@ pub fn grid() -> Vec<GridScene> {
             out.push(scene("preload-threshold", -1e-3, r, 0.01, j0, Some(1e-2)));
         }
     }
-    for switch in contact_bounce::catalogue::ALL {
+    for switch in contact_bounce::scene::catalogue::ALL {
         let omega = (switch.stiffness / switch.mass).sqrt();
         let delta = -switch.preload_force / switch.stiffness;
         let r = switch.restitution;

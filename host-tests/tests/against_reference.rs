@@ -415,7 +415,7 @@ fn the_f32_map_agrees_with_the_f64_map_below_the_f32_tail_cutoff() {
     // asymptote (14.007 impacts where f64 counts 13, last-above time off by 3.6e-3). It now
     // iterates every impact above the threshold in both floats: the same count, times within
     // 1e-4 (measured: 3e-8).
-    use contact_bounce::{catalogue, Scene, Threshold, Viscous};
+    use contact_bounce::{scene::catalogue, Scene, Threshold, Viscous};
     for fraction in [1e-1, 1e-2, 1e-3, 1e-4, 1e-5] {
         let mut wide = catalogue::TACTILE_DOME.contact::<f64>();
         wide.threshold = Threshold::FractionOfFirst(fraction);
@@ -740,7 +740,7 @@ fn sixty_digits(args: [f64; 7]) -> (f64, String) {
 #[test]
 fn the_exact_viscous_tier_keeps_its_expected_error_to_60_digits() {
     // Preloads with viscous damping, whose Zeno tails are summed as series in the departure
-    // (`src/exact/tail.rs`): against `scripts/exact_mp.py` without a kernel. The tactile dome,
+    // (`src/tiers/exact/tail.rs`): against `scripts/exact_mp.py` without a kernel. The tactile dome,
     // heavy damping (zeta 0.5, 0.95), R near 1, and a first departure of 3 Omega |Delta| (the
     // series reaches only 0.25); f64 within its expected error, f32 within its own.
     use contact_bounce::{Contact, Frequency, Offset, Restitution, Scene, Threshold, Viscous};
@@ -1236,7 +1236,7 @@ fn the_window_only_path_gives_the_bounce_time_of_the_prediction() {
 /// A preload force is always a preload: `Scene::new_gap` refuses it, naming the force.
 #[test]
 fn a_preload_force_is_not_a_gap() {
-    use contact_bounce::{catalogue, Error, Parameter, Reason, Scene, Viscous};
+    use contact_bounce::{scene::catalogue, Error, Parameter, Reason, Scene, Viscous};
     let d = catalogue::TACTILE_DOME;
     let damping = Viscous::new(d.damping_ratio).expect("valid");
     assert_eq!(
@@ -1253,7 +1253,7 @@ fn the_f32_exact_tier_solves_the_flights_of_fast_switches() {
     // series of a short flight was summed in seconds: its coefficients grow as Omega^k and
     // overflowed f32 at the MEMS switch's Omega = 1e6 rad/s (NaN, then a flight that "did not
     // return", no expected error); they are now summed in units of 1 / Omega.
-    use contact_bounce::{catalogue, Scene, Threshold, Viscous};
+    use contact_bounce::{scene::catalogue, Scene, Threshold, Viscous};
     for s in catalogue::ALL {
         for fraction in [1e-1, 1e-2, 1e-3] {
             let mut wide = s.contact::<f64>();

@@ -2,8 +2,9 @@
 //! when none does; windows round up, check every conversion and refuse endless predictions.
 
 use contact_bounce::{
-    catalogue, tiers::ClosedForm, tiers::Tier, Contact, Error, Frequency, Margin, Method, Nodes,
-    Offset, Parameter, Reason, Restitution, Scene, Threshold, Tolerance, Undamped, Viscous, Window,
+    scene::catalogue, tiers::ClosedForm, tiers::Tier, Contact, Error, Frequency, Margin, Method,
+    Nodes, Offset, Parameter, Reason, Restitution, Scene, Threshold, Tolerance, Undamped, Viscous,
+    Window,
 };
 
 fn preload(r: f64, zeta: f64, j0: f64) -> Scene<f64, Option<Viscous<f64>>> {
@@ -247,32 +248,34 @@ fn the_expected_error_widens_the_window() {
 
 #[test]
 fn const_window_matches_the_runtime_one() {
-    const T: f64 = match contact_bounce::window::preload_bounce_time(5e-5, 5000.0, 1.0, 0.5, 0.7) {
-        Ok(t) => t.seconds,
-        Err(_) => panic!(),
-    };
+    const T: f64 =
+        match contact_bounce::debounce::window::preload_bounce_time(5e-5, 5000.0, 1.0, 0.5, 0.7) {
+            Ok(t) => t.seconds,
+            Err(_) => panic!(),
+        };
     let dome = Scene::new(catalogue::TACTILE_DOME.contact::<f64>(), Undamped).unwrap();
     assert!((T / dome.t_b1().unwrap().time - 1.0).abs() < 1e-14);
     for (seconds, factor, period) in [(T, 1.5, 1e-5), (1e-3, 1.0, 1e-3), (0.37, 2.0, 1e-4)] {
         let runtime =
             Window::from_seconds(seconds, &Margin::new(factor, 0.0).unwrap(), period).unwrap();
         assert_eq!(
-            contact_bounce::window::window_ticks(seconds, factor, period),
+            contact_bounce::debounce::window::window_ticks(seconds, factor, period),
             Ok(runtime.ticks())
         );
     }
     assert_eq!(
-        contact_bounce::window::window_ticks(1e10, 1.0, 1e-3),
+        contact_bounce::debounce::window::window_ticks(1e10, 1.0, 1e-3),
         Err(Error::new(Parameter::SamplePeriod, Reason::Overflow))
     );
     assert_eq!(
-        contact_bounce::window::preload_bounce_time(5e-5, 5000.0, 1.0, 0.5, 1.0)
+        contact_bounce::debounce::window::preload_bounce_time(5e-5, 5000.0, 1.0, 0.5, 1.0)
             .unwrap_err()
             .parameter(),
         Parameter::Restitution
     );
     assert_eq!(
-        contact_bounce::window::preload_bounce_time(f64::NAN, 5000.0, 1.0, 0.5, 0.5).unwrap_err(),
+        contact_bounce::debounce::window::preload_bounce_time(f64::NAN, 5000.0, 1.0, 0.5, 0.5)
+            .unwrap_err(),
         Error::new(Parameter::Mass, Reason::NotANumber)
     );
 }
@@ -282,7 +285,7 @@ fn const_window_matches_the_runtime_one() {
 /// is the typed error the long path gives.
 #[test]
 fn a_preloaded_switch_gives_the_long_paths_window_and_errors() {
-    use contact_bounce::{catalogue, Margin, Method, Nodes, Parameter, Preloaded, Window};
+    use contact_bounce::{scene::catalogue, Margin, Method, Nodes, Parameter, Preloaded, Window};
     fn long<F: contact_bounce::Float>(
         p: &Preloaded<F>,
         method: Method<F>,

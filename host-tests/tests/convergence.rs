@@ -485,7 +485,7 @@ fn the_map_sums_a_dissipating_tail_early_and_a_lossless_one_exactly() {
     // With restitution alone the map is exact, and keeps walking to 6e-6: its end is the exact
     // sum's to rounding.
     use contact_bounce::tiers::{MapEnd, MapImpacts};
-    let dome = contact_bounce::catalogue::TACTILE_DOME
+    let dome = contact_bounce::scene::catalogue::TACTILE_DOME
         .scene::<f64>()
         .unwrap();
     let mut walk = MapImpacts::new(&dome, 1_000);

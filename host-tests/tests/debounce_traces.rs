@@ -3,7 +3,7 @@
 //! its expected error: no false edge, and in Confirm mode the edge comes one window after the
 //! last bounce, to within a sampling period.
 
-use contact_bounce::{catalogue, Method, Mode, Tolerance};
+use contact_bounce::{scene::catalogue, Method, Mode, Tolerance};
 use host_tests::reference::OneBody;
 use host_tests::traces::{debounce, windows, Dwell, Trace};
 

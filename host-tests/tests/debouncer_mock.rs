@@ -104,7 +104,7 @@ fn pin_errors_pass_through_and_leave_the_state_alone() {
 
 #[test]
 fn the_learning_debouncer_passes_pin_errors_through_and_restores_what_it_learned() {
-    use contact_bounce::{learn::Learned, learn::Tail, LearningDebouncer};
+    use contact_bounce::{debounce::learn::Learned, debounce::learn::Tail, LearningDebouncer};
     let expectations = [
         Transaction::get(Level::High),
         Transaction::get(Level::Low).with_error(MockError::Io(std::io::ErrorKind::Other)),

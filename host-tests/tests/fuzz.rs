@@ -995,14 +995,14 @@ fn raw_inputs<F: Float + std::fmt::Debug>(
     for _ in 0..n {
         let mut v = || raw(rng, f64::from_bits);
         let (m, k, f, s, r, w) = (v(), v(), v(), v(), v(), v());
-        if let Ok(t) = contact_bounce::window::preload_bounce_time(m, k, f, s, r) {
+        if let Ok(t) = contact_bounce::debounce::window::preload_bounce_time(m, k, f, s, r) {
             if !(t.seconds.is_finite() && t.seconds > 0.0) {
                 faults.push(format!(
                     "preload_bounce_time {t:?} of {m:e} {k:e} {f:e} {s:e} {r}"
                 ));
             }
         }
-        if let Ok(ticks) = contact_bounce::window::window_ticks(m, k, w) {
+        if let Ok(ticks) = contact_bounce::debounce::window::window_ticks(m, k, w) {
             if m > 0.0 && k > 0.0 && ticks == 0 {
                 faults.push(format!("window_ticks({m:e}, {k:e}, {w:e}) = 0"));
             }

@@ -4,7 +4,7 @@
 //! no false edge, and after its warm-up its press window is at most 3/2 of the bounce plus one
 //! sample, and covers the bounce where the samples resolve it.
 
-use contact_bounce::{catalogue, learn::WARM_UP, LearnerPrior, LearningState};
+use contact_bounce::{debounce::learn::WARM_UP, scene::catalogue, LearnerPrior, LearningState};
 use host_tests::reference::OneBody;
 use host_tests::traces::{Dwell, Trace};
 

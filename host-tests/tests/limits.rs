@@ -3,7 +3,7 @@
 //! hereditary sum reducing to the viscous formula when Gs = 2 zeta Omega nu.
 
 use contact_bounce::{
-    model::Orbit, scene::Dissipation, tiers::Count, tiers::Time, Contact, Frequency, Hereditary,
+    physics::Orbit, scene::Dissipation, tiers::Count, tiers::Time, Contact, Frequency, Hereditary,
     Method, Nodes, Offset, Restitution, Scene, Threshold, Undamped, Viscous,
 };
 

@@ -183,9 +183,9 @@ proptest! {
             }
         }
         prop_assert_eq!(Tolerance::new(a).is_ok(), a.is_finite() && a > 0.0);
-        let leading = contact_bounce::window::preload_bounce_time(a, b, c, d, 0.5);
+        let leading = contact_bounce::debounce::window::preload_bounce_time(a, b, c, d, 0.5);
         prop_assert!(leading.is_err() || leading.is_ok_and(|l| l.seconds.is_finite() && l.seconds > 0.0));
-        let ticks = contact_bounce::window::window_ticks(a, b, c);
+        let ticks = contact_bounce::debounce::window::window_ticks(a, b, c);
         prop_assert!(ticks.is_err() || (a.is_finite() && b >= 1.0 && c > 0.0));
     }
 

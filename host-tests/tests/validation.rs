@@ -748,7 +748,7 @@ fn the_model_domain_is_enforced() {
 
 #[test]
 fn the_lean_t_b1v_agrees_with_the_scenes_and_refuses_what_the_scene_refuses() {
-    use contact_bounce::{catalogue, tiers::preload_viscous_bounce_time};
+    use contact_bounce::{scene::catalogue, tiers::preload_viscous_bounce_time};
     for d in catalogue::ALL {
         let lean = preload_viscous_bounce_time(&d.preloaded::<f64>()).expect("valid");
         let full = d.scene::<f64>().expect("valid").t_b1v().expect("a preload");
@@ -918,7 +918,9 @@ fn the_lean_restitution_averaged_time_is_the_averaged_tiers_and_refuses_what_the
     // 2 Omega Delta from Omega and Delta, not from sqrt(k m)): equal to rounding in f64, and in
     // f32 to f32's rounding of the inputs, on every catalogue switch and over m / k from 1e-58
     // to 1e58 (both square-root paths of the checks).
-    use contact_bounce::{catalogue, tiers::preload_restitution_bounce_seconds, Method, Nodes};
+    use contact_bounce::{
+        scene::catalogue, tiers::preload_restitution_bounce_seconds, Method, Nodes,
+    };
     let averaged = |m: f64, k: f64, f: f64, v: f64, r: f64| {
         let contact = lean_switch(m, k, f, v, r, 0.0).contact();
         Scene::new(contact, Undamped)

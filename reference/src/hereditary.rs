@@ -135,7 +135,7 @@ impl Kernelled {
     /// The steady internal state at an impact on the generating orbit with impulse J = 2 v:
     /// y = integral_0^T exp(-(T - s)/tau) x(s) ds / (1 - exp(-T/tau)), x the generating orbit.
     fn steady_state(&self, speed: f64) -> f64 {
-        let orbit = contact_bounce::model::Orbit::new(self.omega, self.delta);
+        let orbit = contact_bounce::physics::Orbit::new(self.omega, self.delta);
         let j = 2.0 * speed;
         let period = orbit.at(j).period();
         let panels = 200;

@@ -47,7 +47,7 @@ impl OneBody {
     /// A catalogue switch as the reference models it: Omega = sqrt(c / m), the preload
     /// Delta = -F / c, no threshold.
     #[must_use]
-    pub fn typical(s: &contact_bounce::catalogue::Typical) -> Self {
+    pub fn typical(s: &contact_bounce::scene::catalogue::Typical) -> Self {
         Self {
             omega: (s.stiffness / s.mass).sqrt(),
             delta: -s.preload_force / s.stiffness,

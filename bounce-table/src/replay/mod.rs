@@ -239,7 +239,7 @@ pub fn ours(label: &str, press: f64, release: f64, period: f64, kind: Edge) -> O
     // The core's rounding (up); a window of 0 (every test clean) is one sample.
     let ticks = |w: f64| -> Option<u16> {
         let t = if w > 0.0 {
-            contact_bounce::window::window_ticks(w, 1.0, period).ok()?
+            contact_bounce::debounce::window::window_ticks(w, 1.0, period).ok()?
         } else {
             1
         };
@@ -443,7 +443,7 @@ pub fn learner_prior(
     fastest_tap: f64,
     period: f64,
 ) -> Result<contact_bounce::LearnerPrior, String> {
-    let ticks = contact_bounce::window::window_ticks(prior, 1.0, period)
+    let ticks = contact_bounce::debounce::window::window_ticks(prior, 1.0, period)
         .ok()
         .and_then(|t| u16::try_from(t.max(1)).ok())
         .filter(|t| *t <= Windows::MAX_TICKS)

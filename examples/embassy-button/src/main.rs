@@ -7,7 +7,7 @@
 #![no_main]
 
 use contact_bounce::debounce::Polarity;
-use contact_bounce::wait::{AsyncDebouncer, Learning};
+use contact_bounce::debounce::wait::{AsyncDebouncer, Learning};
 use contact_bounce::{Edge, LearnerPrior};
 use core::num::NonZeroU32;
 use embassy_executor::Spawner;

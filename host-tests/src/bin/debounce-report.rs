@@ -7,7 +7,7 @@
 
 use std::fmt::Write as _;
 
-use contact_bounce::{catalogue, Method, Mode, Tolerance};
+use contact_bounce::{scene::catalogue, Method, Mode, Tolerance};
 use host_tests::reference::OneBody;
 use host_tests::traces::{debounce, windows, Dwell, Trace};
 

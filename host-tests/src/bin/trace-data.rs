@@ -4,7 +4,7 @@
 //!
 //! Usage: `cargo run -p host-tests --bin trace-data > examples/data/relay_press.rs`
 
-use contact_bounce::catalogue;
+use contact_bounce::scene::catalogue;
 use host_tests::reference::OneBody;
 use host_tests::traces::{Dwell, Trace};
 

@@ -8,7 +8,7 @@
 
 use std::collections::BTreeMap;
 
-use contact_bounce::{model::F32_BACKEND, Method, Nodes, Prediction};
+use contact_bounce::{numeric::F32_BACKEND, Method, Nodes, Prediction};
 use host_tests::grid::grid;
 use host_tests::reference::{simulate, Outcome, DEFAULT_BUDGET};
 use host_tests::stats::nearest_rank;
