@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # What the firmware costs: flash and RAM of every example on every target (llvm-size,
 # avr-size), instructions per tier on Cortex-M (QEMU's instruction trace between calls of
-# `cost_mark` in examples/cost.rs), exact cycles on the Arduino Uno (libsimavr, the same
-# markers in examples/uno_cost.rs), and the debouncers' per-sample cost against debouncr's.
+# `cost_mark` in measure/cost.rs), exact cycles on the Arduino Uno (libsimavr, the same
+# markers in measure/uno_cost.rs), and the debouncers' per-sample cost against debouncr's.
 # Fails if ours costs more per sample than debouncr's on any target, if the learner's idle
 # path (no edge in progress) costs more than twice ours (deterministic counts), or if a Cortex-M
 # example or a tier's firmware links any panic code (core::panicking: the crate has no
@@ -94,7 +94,7 @@ fi
   echo
   echo "## Instructions per call on Cortex-M (QEMU, tactile dome in f32)"
   echo
-  echo "Instructions between consecutive calls of \`cost_mark\` in \`examples/cost.rs\` (each includes"
+  echo "Instructions between consecutive calls of \`cost_mark\` in \`measure/cost.rs\` (each includes"
   echo "the marker's few instructions). Debouncers: per sample, net of the sample loop (1000 samples of a"
   echo "bouncing input; idle: 1000 samples of a settled contact, no edge in progress)."
   echo
@@ -110,7 +110,7 @@ for target in thumbv6m-none-eabi thumbv7m-none-eabi thumbv7em-none-eabihf; do
   mapfile -t c < <(awk -v mark="$mark" '{ if (match($0, /\[[0-9a-f]+\/([0-9a-f]+)\//)) { n++; if (substr($0, RSTART+10, 8) == mark) { if (last) print n - last; last = n } } }' "$tmp/trace")
   # c: validate, closed, N4, N8, map, exact, auto, setup, ours, setup, debouncr, loop
   ours=$(( (c[8] - c[11]) )); theirs=$(( (c[10] - c[11]) ))
-  # The learner apart (examples/cost_learner.rs): setup, learner, ours idle, learner idle,
+  # The learner apart (measure/cost_learner.rs): setup, learner, ours idle, learner idle,
   # idle loop, loop.
   elf="target/$target/firmware/examples/cost_learner"
   mark=$("$llvm_bin/llvm-nm" "$elf" | awk '$3 == "cost_mark" { print $1 }')
@@ -134,7 +134,7 @@ done
 {
   echo
   echo "Learner: the learning debouncer (\`LearningState\`) on the same bouncing input, measured apart in"
-  echo "\`examples/cost_learner.rs\` (and \`uno_cost_learner.rs\`) so that each debouncer is inlined as a firmware"
+  echo "\`measure/cost_learner.rs\` (and \`uno_cost_learner.rs\`) so that each debouncer is inlined as a firmware"
   echo "that uses it alone would inline it. Idle: a settled contact, the path of nearly every sample; the"
   echo "learner's must cost at most twice ours. RAM per key: \`State\` 2 bytes, \`LearningState\` 24 bytes"
   echo "(\`size_of\`, tested)."
@@ -148,13 +148,13 @@ marks_qemu() { # elf target -> one count per interval between marks
     -d exec,nochain -singlestep -D "$tmp/trace" -kernel "$1"
   awk -v mark="$mark" '{ if (match($0, /\[[0-9a-f]+\/([0-9a-f]+)\//)) { n++; if (substr($0, RSTART+10, 8) == mark) { if (last) print n - last; last = n } } }' "$tmp/trace"
 }
-# The keyboard matrix (examples/cost_matrix.rs): 100 keys typed on and idle, ours against
+# The keyboard matrix (measure/cost_matrix.rs): 100 keys typed on and idle, ours against
 # debouncr and a QMK-like sym_eager_pk; RAM from the sizes of the RAM_* symbols.
 {
   echo
   echo "## Keyboard matrix, 100 keys (QEMU)"
   echo
-  echo "Instructions per key per scan, net of the scan loop, in \`examples/cost_matrix.rs\`: a 10 x 10"
+  echo "Instructions per key per scan, net of the scan loop, in \`measure/cost_matrix.rs\`: a 10 x 10"
   echo "matrix (\`u16\` rows) scanned 500 times while typed on (a tap every 50 scans on another key, its"
   echo "press and release bouncing), then 500 times idle. Ours: \`LearningMatrix\`; debouncr: one"
   echo "5-sample \`Debouncer\` a key; QMK-like: \`sym_eager_pk\` as QMK's source describes it (a countdown"
@@ -191,7 +191,7 @@ done
 } >> "$out"
 
 # Every tier on every catalogue switch (and a few more scenes), Cortex-M4F: what Auto's cost
-# estimates are fitted to (examples/cost_catalogue.rs).
+# estimates are fitted to (measure/cost_catalogue.rs).
 target=thumbv7em-none-eabihf
 cargo build --quiet --profile firmware --target "$target" --example cost_catalogue
 elf="target/$target/firmware/examples/cost_catalogue"
@@ -212,7 +212,7 @@ fi
   echo
   echo "## Every tier on each switch (Cortex-M4F, f32)"
   echo
-  echo "Instructions per call (QEMU) in \`examples/cost_catalogue.rs\`: the catalogue's switches, the"
+  echo "Instructions per call (QEMU) in \`measure/cost_catalogue.rs\`: the catalogue's switches, the"
   echo "tactile dome with more impacts, and the dome with a relaxation kernel (kappa 1/s^3 / tau) instead"
   echo "of viscous damping. \`Method::Auto\` weighs the map, the averaged model and the exact tier by"
   echo "estimates fitted to these counts, in map impacts of about 300 instructions: an averaged"
@@ -235,7 +235,7 @@ if [ "$uno" = 1 ]; then
   mapfile -t c < <("$tmp/simavr-cycles" "$elf" "$mark" | grep -E '^[0-9]+$' | awk 'NR > 1 { print $1 - prev } { prev = $1 }')
   # c: validate, map walk, setup, ours, setup, debouncr, loop
   ours=$(( c[3] - c[6] )); theirs=$(( c[5] - c[6] ))
-  # The learner apart (examples/uno_cost_learner.rs): setup, learner, ours idle, learner idle,
+  # The learner apart (measure/uno_cost_learner.rs): setup, learner, ours idle, learner idle,
   # idle loop, loop.
   elf=target/avr-none/firmware/examples/uno_cost_learner.elf
   mark=$(avr-nm "$elf" | awk '$3 == "cost_mark" { print $1 }')
@@ -245,7 +245,7 @@ if [ "$uno" = 1 ]; then
     echo
     echo "## Exact cycles on the Arduino Uno (libsimavr, 16 MHz, tactile dome in f32)"
     echo
-    echo "Cycles between consecutive calls of \`cost_mark\` in \`examples/uno_cost.rs\`. The map's full"
+    echo "Cycles between consecutive calls of \`cost_mark\` in \`measure/uno_cost.rs\`. The map's full"
     echo "prediction, the closed, averaged and exact tiers do not fit the Uno beside the rest (sizes above;"
     echo "alone, every tier but Auto on a damped scene fits: \"One firmware per tier\" below): on the Uno,"
     echo "walk the map with \`MapImpacts\`, take a lean path, or fix the window at compile time."
@@ -265,7 +265,7 @@ if [ "$uno" = 1 ]; then
   fi
 fi
 
-# One firmware per tier (examples/tier_*.rs, skeleton examples/common/tier_firmware.rs): the
+# One firmware per tier (measure/tier_*.rs, skeleton measure/common/tier_firmware.rs): the
 # method is a constant, so each links its tier alone. Crate bytes: its text minus tier_empty's
 # (the same skeleton, no crate code). The count is the tier's call (and its window) between
 # the second and third marks: instructions under QEMU, cycles under simavr.
@@ -317,7 +317,7 @@ PY
   echo
   echo "## One firmware per tier"
   echo
-  echo "\`examples/tier_*.rs\`: the tactile dome written as f32 constants (as firmware writes its switch:"
+  echo "\`measure/tier_*.rs\`: the tactile dome written as f32 constants (as firmware writes its switch:"
   echo "no f64 catalogue converted at run time), hidden from the optimiser and validated as the preload it is"
   echo "(\`Preloaded::scene\`, a \`Scene<f32, Viscous<f32>, Preload>\`: no gap's code linked), one tier named as a constant (so it alone is"
   echo "linked), its window at 10 us samples by \`Window::from_scene\` (the bounce time alone: no counts and no"

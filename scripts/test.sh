@@ -178,6 +178,7 @@ step "generated tables are current"
 python3 scripts/gauss_legendre.py | rustfmt --edition 2021 | diff - src/numeric/quadrature/table.rs
 python3 scripts/averaged_error_table.py | rustfmt --edition 2021 | diff - src/tiers/accuracy/zeno_table.rs
 python3 scripts/flight_series.py | rustfmt --edition 2021 | diff - src/numeric/flight_series.rs
+python3 measure/generate.py --check
 
 step "measured tables are current (docs/ regenerates identically)"
 cargo run --quiet --release -p host-tests --bin error-table | diff - docs/error-table.md

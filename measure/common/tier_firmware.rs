@@ -1,4 +1,4 @@
-// The skeleton of the per-tier cost firmware (`examples/tier_*.rs`): the tactile dome of
+// The skeleton of the per-tier cost firmware (`measure/tier_*.rs`): the tactile dome of
 // docs/physics.md sec. 7 written as f32 constants (as firmware writes its switch: no f64
 // catalogue converted at run time), its inputs hidden from the optimiser; `cost_mark(0)`, the scene
 // validated, typed as the preload it is (`Preloaded::scene`, `Scene::new_preload`: no gap's code

@@ -1,4 +1,4 @@
-// The keyboard matrix's share of examples/cost_matrix.rs: a 100-key matrix (10 rows of 10
+// The keyboard matrix's share of measure/cost_matrix.rs: a 100-key matrix (10 rows of 10
 // columns, u16 rows) scanned 500 times while typed on (a tap every 50 scans on another key, held
 // 30 scans, its press bouncing open at scans 1 and 3 and its release closing again at 1), then
 // 500 idle scans; through our `LearningMatrix`, debouncr (one 5-sample `Debouncer` per key, 1

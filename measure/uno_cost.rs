@@ -5,7 +5,7 @@
 #![cfg_attr(target_arch = "avr", no_std, no_main, feature(asm_experimental_arch))]
 
 #[cfg(target_arch = "avr")]
-#[path = "common/avr.rs"]
+#[path = "../examples/common/avr.rs"]
 #[allow(dead_code)] // the UART is not used here
 mod avr;
 
