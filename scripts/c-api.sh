@@ -91,6 +91,7 @@ uno() { # source, then avr-gcc's other arguments
 }
 uno "$C/examples/c/uno.c" -o "$tmp/uno.elf"
 avr-size "$tmp/uno.elf"
+read -r uno_text uno_data _ < <(avr-size "$tmp/uno.elf" | tail -n 1)
 no_panic "$tmp/uno.elf" avr-nm
 timeout 300 simavr -m atmega328p -f 16000000 "$tmp/uno.elf" > "$tmp/raw" 2>&1 || true
 sed -e 's/\x1b\[[0-9;]*m//g' "$tmp/raw" | grep -v -e '^Loaded ' -e '^$' | sed -e 's/\.$//' > "$tmp/uno"
@@ -199,6 +200,10 @@ if [ "${1:-}" = "--write" ]; then
     echo "takes one links both sides' code and the undamped sums; the \`cb_preload_*\` ones link no gap's"
     echo "code. From Rust, a scene typed by its sign and its damping (\`Scene<f32, Viscous<f32>, Preload>\`)"
     echo "links less: \`docs/cost-report.md\` has each tier's firmware on the Uno that way."
+    echo
+    echo "The Uno example, \`contact-bounce-c/examples/c/uno.c\` (both lean paths, the closed tier through"
+    echo "\`cb_preload_seconds_closed\`, the debouncer and the learner, with its UART and the lines it prints):"
+    echo "$uno_text bytes of code and $uno_data of initialised data, $((uno_text + uno_data)) bytes of flash."
   } > docs/c-api-uno.md
 fi
 
