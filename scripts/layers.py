@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The core's layers: every import runs down, and no files import each other in a loop.
+"""Layers: every import runs down, and no files import each other in a loop.
 
 The core (`src/`) is five layers, lowest first; a file may import from its own layer or a
 lower one, never a higher one:
@@ -10,10 +10,16 @@ lower one, never a higher one:
     tiers     src/tiers/     how to predict: closed, averaged, map, exact; method, prediction
     debounce  src/debounce/  from a prediction to a window, and the debouncers on it
 
-`src/lib.rs` sits above them all (it only declares and re-exports). Beyond the layers, the
-files themselves must not import each other in a loop: the graph of `use` (and of inline
-`crate::`/`super::` paths) between files has no cycle. A parent's `mod child;` is not an
-import, and neither are `#[cfg(test)]` modules.
+The desk tool (`bounce-table/src/`) is the same with its own layers: `support` (strict input,
+threads), `capture` (one reader per format), `scene` (scene files, the catalogue, priors, the
+reference), `stats` (fits, windows from captures, the Monte Carlo), `render` (formats, plots),
+`commands` (the table mode and each subcommand), `cli`; and one subcommand never imports
+another (`commands/replay` may not use `commands/calibrate`: what both need lives below).
+
+`lib.rs` and `main.rs` sit above them all. Beyond the layers, the files themselves must not
+import each other in a loop: the graph of `use` (and of inline `crate::`/`super::` paths)
+between files has no cycle. A parent's `mod child;` is not an import, and neither are
+`#[cfg(test)]` modules.
 
     python3 scripts/layers.py            # check; exit 1 with each violation
     python3 scripts/layers.py --graph    # also print every file's imports
@@ -23,8 +29,13 @@ import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
+# (source folder, layers lowest first, the layer whose children may not import each other)
+CRATES = [
+    ("src", ["numeric", "physics", "scene", "tiers", "debounce"], None),
+    ("bounce-table/src", ["support", "capture", "scene", "stats", "render", "commands", "cli"], "commands"),
+]
 SRC = ROOT / "src"
-LAYERS = ["numeric", "physics", "scene", "tiers", "debounce"]
+LAYERS = CRATES[0][1]
 
 
 def strip_comments_and_tests(text):
@@ -179,8 +190,16 @@ def resolve(target, files, depth=0):
 
 
 def layer_of(path):
-    rel = path.relative_to(SRC).parts
-    return LAYERS.index(rel[0]) if rel[0] in LAYERS else None
+    first = path.relative_to(SRC).parts[0].removesuffix(".rs")
+    return LAYERS.index(first) if first in LAYERS else None
+
+
+def sibling_of(path, siblings):
+    """The child of the `siblings` layer the file belongs to (`commands/replay/mod.rs` -> replay)."""
+    parts = path.relative_to(SRC).parts
+    if siblings is None or len(parts) < 2 or parts[0] != siblings or parts[1] == "mod.rs":
+        return None
+    return parts[1].removesuffix(".rs")
 
 
 def cycles(graph):
@@ -217,7 +236,11 @@ def cycles(graph):
     return out
 
 
-def main():
+def check(crate, graph_wanted):
+    global SRC, LAYERS
+    folder, LAYERS, siblings = crate
+    SRC = ROOT / folder
+    REEXPORTS.clear()
     sources = sorted(SRC.rglob("*.rs"))
     files = {tuple(module_of(p)): p for p in sources}
     graph = {}
@@ -225,12 +248,12 @@ def main():
         text = strip_comments_and_tests(p.read_text())
         graph[p] = imports(p, text, files)
     rel = lambda p: str(p.relative_to(ROOT))
-    if "--graph" in sys.argv:
+    if graph_wanted:
         for p in sources:
             print(rel(p), "->", " ".join(sorted(rel(q) for q in graph[p])))
     bad = 0
     for p in sources:
-        if p.parent == SRC and p.name == "lib.rs":
+        if p.parent == SRC and p.name in ("lib.rs", "main.rs"):
             continue
         lp = layer_of(p)
         if lp is None:
@@ -242,14 +265,24 @@ def main():
             if lq is not None and lq > lp:
                 print(f"{rel(p)} ({LAYERS[lp]}) imports {rel(q)} ({LAYERS[lq]}), a higher layer")
                 bad += 1
+            a, b = sibling_of(p, siblings), sibling_of(q, siblings)
+            if a and b and a != b:
+                print(f"{rel(p)} ({siblings}/{a}) imports {rel(q)} ({siblings}/{b}): subcommands stay apart")
+                bad += 1
     for comp in cycles(graph):
         print(f"import loop of {len(comp)} files: {' '.join(rel(p) for p in comp)}")
         bad += 1
     edges = sum(len(v) for v in graph.values())
     if bad:
-        print(f"layers: {bad} violation(s) in {len(sources)} files, {edges} imports")
-        sys.exit(1)
-    print(f"layers: {len(sources)} files, {edges} imports, all down the layers, no loop")
+        print(f"layers: {folder}: {bad} violation(s) in {len(sources)} files, {edges} imports")
+    else:
+        print(f"layers: {folder}: {len(sources)} files, {edges} imports, all down the layers, no loop")
+    return bad
+
+
+def main():
+    bad = sum(check(crate, "--graph" in sys.argv) for crate in CRATES)
+    sys.exit(1 if bad else 0)
 
 
 if __name__ == "__main__":

@@ -167,9 +167,9 @@ every 1 ms (the scan rate of the keyboard firmwares) at a phase that changes fro
 and is the same for every debouncer; the two \`gpio-keys\` are interrupt-driven and see every
 change. "false edges": reported edges beyond the one true edge of each test; latency: from the
 first contact change to the first reported edge. The peers are re-implemented from their
-documentation at their defaults (\`bounce-table/src/replay.rs\` says how each works); debouncr
+documentation at their defaults (\`bounce-table/src/commands/replay/peers/\` says how each works); debouncr
 is the crate itself. \`physics-prior\` is the window the switch's type gives without a capture
-(\`bounce-table/src/priors.rs\`): the P99.9 of a survey of 18 hand-operated switches, whose
+(\`bounce-table/src/scene/priors.rs\`): the P99.9 of a survey of 18 hand-operated switches, whose
 worst bounced 157 ms, at most the fastest real tap (31 ms), so that a user can type with it.
 \`learned\` is the core's learning debouncer (\`LearningState\`): it starts from that prior at
 the switch's first test and learns online through every test in capture order, press and
@@ -194,7 +194,7 @@ $checks
 The capture's later presses and releases spliced into seeded sequences of 1,000 taps per
 switch and regime, with human timing (\`docs/human-timing.md\`), and a switch with no bounce at
 all as a control; every debouncer runs through each whole sequence without a reset, sampling
-every 1 ms at one phase for all (\`bounce-table/src/taps.rs\` says how the taps are spliced and
+every 1 ms at one phase for all (\`bounce-table/src/commands/replay/taps.rs\` says how the taps are spliced and
 scored). Per tap: \`missed\`, no press reported between the previous tap's release and its own
 (a real press lost); \`false edges\`, presses beyond one and releases beyond one; \`correct\`,
 exactly one press and one release, in order. The learner starts from the switch type's prior

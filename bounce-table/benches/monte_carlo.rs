@@ -42,8 +42,8 @@
 use std::hint::black_box;
 use std::time::Duration;
 
-use bounce_table::analysis::{analyse, Settings};
-use bounce_table::scenes::{catalogue, read};
+use bounce_table::scene::file::{catalogue, read};
+use bounce_table::stats::analysis::{analyse, Settings};
 use contact_bounce::{Method, Tolerance};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 

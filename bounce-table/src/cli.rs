@@ -6,14 +6,14 @@
 use clap::error::ErrorKind;
 use clap::{Args, Parser, Subcommand};
 
-use crate::analysis::Settings;
-use crate::calibrate::{self, Format as CaptureFormat};
+use crate::capture::scope;
 use crate::capture::Polarity;
-use crate::eval::{self, EvalMethod, Precision};
-use crate::output::Format;
-use crate::priors::{self, Prior};
-use crate::replay;
-use crate::scope;
+use crate::capture::{self, Format as CaptureFormat};
+use crate::commands::eval::{self, EvalMethod, Precision};
+use crate::commands::replay;
+use crate::render::output::Format;
+use crate::scene::priors::{self, Prior};
+use crate::stats::analysis::Settings;
 use contact_bounce::Nodes;
 
 /// The most worker threads `--threads` takes: each is a stack, and a run asks for no more
@@ -51,7 +51,7 @@ pub enum Invocation {
     /// `replay`.
     Replay(replay::Request),
     /// `calibrate`.
-    Calibrate(calibrate::Options),
+    Calibrate(capture::Options),
     /// `--help`: the text to print.
     Help(String),
     /// `--version`.
@@ -100,7 +100,7 @@ where
     };
     let refuse = |message: String| Refusal {
         subcommand,
-        message: crate::strict::printable(&message).into_owned(),
+        message: crate::support::strict::printable(&message).into_owned(),
     };
     let cli = match Cli::try_parse_from(std::iter::once("bounce-table".to_owned()).chain(args)) {
         Ok(cli) => cli,
@@ -134,10 +134,12 @@ where
             },
             output: a.format,
             plot: a.plot,
-            taps: a.taps.then_some(crate::taps::TapSettings {
-                count: a.tap_count,
-                seed: a.tap_seed,
-            }),
+            taps: a
+                .taps
+                .then_some(crate::commands::replay::taps::TapSettings {
+                    count: a.tap_count,
+                    seed: a.tap_seed,
+                }),
         })),
         Some(Command::Calibrate(a)) => {
             let mut options = a.capture.into_options().map_err(refuse)?;
@@ -484,7 +486,7 @@ struct CaptureArgs {
 
 impl CaptureArgs {
     /// `calibrate`'s options for this capture (what is written left at the report).
-    fn into_options(self) -> Result<calibrate::Options, String> {
+    fn into_options(self) -> Result<capture::Options, String> {
         let format = match self.capture_format {
             Some(f) => f,
             None if std::path::Path::new(&self.file).is_dir() => CaptureFormat::Scope(None),
@@ -505,7 +507,7 @@ impl CaptureArgs {
             (None, Some((low, high))) => scope::Input::Volts(low, high),
             (None, None) => scope::Input::Swing,
         };
-        Ok(calibrate::Options {
+        Ok(capture::Options {
             file: self.file,
             format,
             resolution: self.resolution,
@@ -693,7 +695,7 @@ fn written(v: &str) -> Result<Written, String> {
 mod tests {
     use super::*;
 
-    fn calibrate(args: &[&str]) -> Result<calibrate::Options, Refusal> {
+    fn calibrate(args: &[&str]) -> Result<capture::Options, Refusal> {
         match parse(std::iter::once("calibrate").chain(args.iter().copied()))? {
             Invocation::Calibrate(o) => Ok(o),
             other => panic!("{other:?}"),

@@ -3,22 +3,12 @@
 //! analysis over parameter ranges, sensitivities, tables, firmware constants and plots; and `eval`, the
 //! JSON Lines interface to the model and the exact reference.
 
-pub mod analysis;
-pub mod calibrate;
+// The layers, lowest first: each module uses only its own layer and those below it, and the
+// subcommands never use each other (`scripts/layers.py` checks it).
 pub mod capture;
 pub mod cli;
-pub mod emit;
-pub mod eval;
-pub mod output;
-pub mod plot;
-pub mod priors;
-pub mod replay;
-pub mod scene_input;
-pub mod scenes;
-pub mod scope;
-pub mod spool;
-pub mod spreads;
-pub mod strict;
-pub mod table;
-pub mod taps;
-pub mod workers;
+pub mod commands;
+pub mod render;
+pub mod scene;
+pub mod stats;
+pub mod support;

@@ -10,10 +10,13 @@ use bounce_table::capture::EdgeName;
 use std::process::ExitCode;
 
 use bounce_table::cli::{self, Invocation};
-use bounce_table::output::{identifier, render_to};
-use bounce_table::scenes::{open, Entries};
-use bounce_table::strict::printable;
-use bounce_table::{calibrate, eval, plot, replay, table, taps};
+use bounce_table::commands::replay::taps;
+use bounce_table::commands::{calibrate, eval, replay, table};
+use bounce_table::render::output::{identifier, render_to};
+use bounce_table::render::plot;
+use bounce_table::scene::file::{open, Entries};
+use bounce_table::support::strict::printable;
+use bounce_table::{capture, stats};
 
 /// Writes to standard output. A reader that stopped early (`bounce-table ... | head`) ends the
 /// run quietly with success, as it does for other command-line tools; any other failure to
@@ -130,11 +133,11 @@ fn write_plots(dir: &str, plots: Vec<(String, String)>) -> Result<(), ExitCode> 
 
 /// `bounce-table replay`.
 fn replay_main(request: &replay::Request) -> ExitCode {
-    let calibrate::Loaded {
+    let capture::Loaded {
         events,
         skipped,
         analog,
-    } = match calibrate::load(&request.capture) {
+    } = match capture::load(&request.capture) {
         Ok(x) => x,
         Err(e) => {
             eprintln!("bounce-table replay: {e}");
@@ -172,7 +175,7 @@ fn replay_main(request: &replay::Request) -> ExitCode {
         replay::Output::Json => out!("{}", replay::json(&lines)),
         replay::Output::Curve => {}
         replay::Output::Markdown => {
-            let loaded = calibrate::Loaded {
+            let loaded = capture::Loaded {
                 events,
                 skipped,
                 analog,
@@ -245,7 +248,7 @@ fn eval_main(options: &eval::Options) -> ExitCode {
 }
 
 /// `bounce-table calibrate`.
-fn calibrate_main(options: &calibrate::Options) -> ExitCode {
+fn calibrate_main(options: &capture::Options) -> ExitCode {
     if let Some(output) = &options.output {
         let same = std::fs::canonicalize(&options.file)
             .ok()
@@ -259,25 +262,25 @@ fn calibrate_main(options: &calibrate::Options) -> ExitCode {
             return ExitCode::from(2);
         }
     }
-    let calibrate::Loaded {
+    let capture::Loaded {
         events,
         skipped,
         analog,
-    } = match calibrate::load(options) {
+    } = match capture::load(options) {
         Ok(x) => x,
         Err(e) => {
             eprintln!("bounce-table calibrate: {e}");
             return ExitCode::from(2);
         }
     };
-    let loaded = calibrate::Loaded {
+    let loaded = capture::Loaded {
         events,
         skipped,
         analog,
     };
     // The plots are files of their own; the text is what the library writes.
     if let (Some(dir), false, None) = (&options.plot, options.events, options.export) {
-        let groups = calibrate::group(&loaded.events, options.resolution, options.burst_gap);
+        let groups = stats::group(&loaded.events, options.resolution, options.burst_gap);
         for ((switch, kind), d) in &groups {
             let name = format!(
                 "{dir}/{}-{}.svg",
@@ -293,7 +296,9 @@ fn calibrate_main(options: &calibrate::Options) -> ExitCode {
             }
         }
     }
-    let text = match calibrate::written(options, &loaded) {
+    let text = match calibrate::written(options, &loaded, || {
+        taps::window_costs(&loaded.events, options)
+    }) {
         Ok(text) => text,
         Err(e) => {
             eprintln!("bounce-table calibrate: {}", printable(&e));

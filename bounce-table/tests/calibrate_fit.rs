@@ -5,13 +5,13 @@
 
 mod common;
 
-use bounce_table::calibrate::{
+use bounce_table::capture::{Edge, Event};
+use bounce_table::render::emit::Lang;
+use bounce_table::scene::spreads::SplitMix;
+use bounce_table::stats::{
     group, random_splits, reopening_threshold, validations, window, BounceModel, ImpactFit,
     LogNormal,
 };
-use bounce_table::capture::{Edge, Event};
-use bounce_table::emit::Lang;
-use bounce_table::spreads::SplitMix;
 use contact_bounce_reference::{simulate_observed, OneBody, DEFAULT_BUDGET};
 
 const OMEGA: f64 = 2.0 * std::f64::consts::PI * 1000.0;
@@ -135,7 +135,8 @@ fn exported_windows_compile_as_c_and_rust() {
     let header = dir.join("windows.h");
     std::fs::write(
         &header,
-        bounce_table::calibrate::export(&groups, 0.99, None, Lang::C, "synthetic.jsonl").unwrap(),
+        bounce_table::commands::calibrate::export(&groups, 0.99, None, Lang::C, "synthetic.jsonl")
+            .unwrap(),
     )
     .unwrap();
     let c = dir.join("use.c");
@@ -149,9 +150,14 @@ fn exported_windows_compile_as_c_and_rust() {
     .unwrap();
     common::compile_c(&c, &dir);
     let rs = dir.join("windows.rs");
-    let constants =
-        bounce_table::calibrate::export(&groups, 0.99, None, Lang::Rust, "synthetic.jsonl")
-            .unwrap();
+    let constants = bounce_table::commands::calibrate::export(
+        &groups,
+        0.99,
+        None,
+        Lang::Rust,
+        "synthetic.jsonl",
+    )
+    .unwrap();
     std::fs::write(
         &rs,
         format!("{constants}\npub fn w() -> u64 {{ SYNTHETIC_PRESS_WINDOW_NS }}\n"),
@@ -176,13 +182,14 @@ fn exported_windows_compile_as_c_and_rust() {
         .collect();
     let long_groups = group(&long, 1e-12, GAP);
     let refused =
-        bounce_table::calibrate::export(&long_groups, 0.99, None, Lang::C, "long.csv").unwrap_err();
+        bounce_table::commands::calibrate::export(&long_groups, 0.99, None, Lang::C, "long.csv")
+            .unwrap_err();
     assert!(
         refused.contains("beyond a 64-bit count of nanoseconds"),
         "{refused}"
     );
     let d: Vec<_> = groups.values().flatten().collect();
-    let window = bounce_table::calibrate::window(&d, 0.99);
+    let window = bounce_table::stats::window(&d, 0.99);
     let recommended = window.recommended();
     assert!(recommended >= d[0].bounce && recommended >= window.predictive.unwrap());
     let want = format!(
@@ -199,7 +206,7 @@ fn the_plot_draws_the_observed_and_the_modelled_distribution() {
     let events: Vec<Event> = (0..10).map(|i| press(0.7, 0.01, f64::from(i))).collect();
     let groups = group(&events, 1e-12, GAP);
     let ((switch, kind), d) = groups.iter().next().unwrap();
-    let svg = bounce_table::calibrate::plot(switch, *kind, d, 0.99);
+    let svg = bounce_table::commands::calibrate::plot(switch, *kind, d, 0.99);
     assert!(svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"));
     assert!(
         svg.contains("observed") && svg.contains("impact model") && svg.contains("fitted model"),
@@ -211,11 +218,11 @@ fn the_plot_draws_the_observed_and_the_modelled_distribution() {
         10,
         "one dot per bouncing event"
     );
-    let window = bounce_table::calibrate::window(&d.iter().collect::<Vec<_>>(), 0.99);
+    let window = bounce_table::stats::window(&d.iter().collect::<Vec<_>>(), 0.99);
     assert!(
         svg.contains(&format!(
             "window {} (P99 of the fitted model)",
-            bounce_table::plot::time(window.recommended())
+            bounce_table::render::plot::time(window.recommended())
         )),
         "the window is marked: {svg}"
     );
@@ -566,7 +573,7 @@ fn a_later_half_that_never_bounced_is_said_so_not_divided_by() {
         section: None,
     }));
     let groups = group(&events, 1e-12, GAP);
-    let text = bounce_table::calibrate::summary(&groups, 0.99, GAP, None);
+    let text = bounce_table::commands::calibrate::summary(&groups, 0.99, GAP, None);
     assert!(
         text.contains("covers 10 of the 10 later presses, none of which bounced")
             && !text.contains("inf times"),
@@ -590,7 +597,7 @@ fn the_bounce_is_counted_per_section_of_the_protocol() {
     events.push(release(6, "fast", vec![0.0]));
     events.extend((7..10).map(|i| release(i, "fast", vec![0.0, 1e-4, 2e-4, 10.2e-3, 10.3e-3])));
     let groups = group(&events, 3e-6, GAP);
-    let text = bounce_table::calibrate::by_section(&groups);
+    let text = bounce_table::commands::calibrate::by_section(&groups);
     // The earlier half is the first five releases, all slow.
     assert!(
         text.contains(
@@ -612,7 +619,7 @@ fn the_bounce_is_counted_per_section_of_the_protocol() {
         })
         .collect();
     assert_eq!(
-        bounce_table::calibrate::by_section(&group(&one, 3e-6, GAP)),
+        bounce_table::commands::calibrate::by_section(&group(&one, 3e-6, GAP)),
         ""
     );
     let none: Vec<Event> = events
@@ -620,7 +627,7 @@ fn the_bounce_is_counted_per_section_of_the_protocol() {
         .map(|e| Event { section: None, ..e })
         .collect();
     assert_eq!(
-        bounce_table::calibrate::by_section(&group(&none, 3e-6, GAP)),
+        bounce_table::commands::calibrate::by_section(&group(&none, 3e-6, GAP)),
         ""
     );
 }

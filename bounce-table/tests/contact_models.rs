@@ -4,7 +4,7 @@
 //! timing alone does not fix them all), and a model must not fit what it cannot produce as
 //! well as what it can.
 
-use bounce_table::calibrate::contact::{ContactFit, ContactModel};
+use bounce_table::stats::contact::{ContactFit, ContactModel};
 
 /// Durations at 40 evenly spread probabilities of a model with known parameters.
 fn synthetic(kind: ContactModel, params: Vec<f64>) -> (ContactFit, Vec<f64>) {

@@ -13,10 +13,10 @@
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
-use bounce_table::analysis::{analyse, Settings};
 use bounce_table::capture::{read_csv, read_jsonl, read_vcd, CaptureError, Event, Polarity};
 use bounce_table::cli::{self, Invocation};
-use bounce_table::scenes::read;
+use bounce_table::scene::file::read;
+use bounce_table::stats::analysis::{analyse, Settings};
 
 fn cases() -> usize {
     std::env::var("FUZZ_PARSERS")
@@ -314,7 +314,7 @@ fn eval_lines_evaluate_or_are_refused() {
                     panic!("valid options")
                 };
                 match no_panic("eval", &line, || {
-                    bounce_table::eval::evaluate(&line, 1, &options)
+                    bounce_table::commands::eval::evaluate(&line, 1, &options)
                 }) {
                     Ok(v) => {
                         ok += 1;
@@ -354,10 +354,10 @@ fn check_events(what: &str, input: &str, events: &[Event]) {
     }
     // What was read describes, fits and reports.
     no_panic("calibrate", input, || {
-        let groups = bounce_table::calibrate::group(events, 3e-6, 5e-3);
-        let _ = bounce_table::calibrate::describe(&groups, 3e-6);
-        let _ = bounce_table::calibrate::summary(&groups, 99.0, 5e-3, None);
-        let _ = bounce_table::calibrate::summary(&groups, 99.0, 5e-3, Some(31e-3));
+        let groups = bounce_table::stats::group(events, 3e-6, 5e-3);
+        let _ = bounce_table::commands::calibrate::describe(&groups, 3e-6);
+        let _ = bounce_table::commands::calibrate::summary(&groups, 99.0, 5e-3, None);
+        let _ = bounce_table::commands::calibrate::summary(&groups, 99.0, 5e-3, Some(31e-3));
     });
 }
 
@@ -419,11 +419,16 @@ fn captures_are_read_or_refused_by_line() {
             // thresholds; the Keysight file's first channel.
             _ => {
                 let channel = (kind == "keysight").then_some("1");
-                let input = bounce_table::scope::Input::Swing;
-                bounce_table::scope::load(&name, &text, None, channel, &input, Polarity::ActiveLow)
-                    .map(|(streams, _)| {
-                        streams.iter().flat_map(|s| s.segment(&name, 0.2)).collect()
-                    })
+                let input = bounce_table::capture::scope::Input::Swing;
+                bounce_table::capture::scope::load(
+                    &name,
+                    &text,
+                    None,
+                    channel,
+                    &input,
+                    Polarity::ActiveLow,
+                )
+                .map(|(streams, _)| streams.iter().flat_map(|s| s.segment(&name, 0.2)).collect())
             }
         });
         match read {

@@ -9,9 +9,11 @@
 //! capture is there).
 
 use bounce_table::capture;
-use bounce_table::priors;
-use bounce_table::replay::{learner_prior, Trace};
-use bounce_table::taps::{self, Regime, Sequence, Tap, TapScore, Waveforms, FASTEST_TAP};
+use bounce_table::commands::replay::taps::{
+    self, Regime, Sequence, Tap, TapScore, Waveforms, FASTEST_TAP,
+};
+use bounce_table::commands::replay::{learner_prior, Trace};
+use bounce_table::scene::priors;
 use contact_bounce::debounce::matrix::{KeyEvent, LearningMatrix, MATRIX_WARM_UP};
 use contact_bounce::{Edge, LearnerPrior, LearningState};
 

@@ -18,7 +18,7 @@
 //! 6th differing scan at 1 ms, the 4th at 2 ms and the 3rd at 4 ms. Checked on traces derived
 //! by hand from that rule, and on random traces against an integer-millisecond model of it.
 
-use bounce_table::replay::{peers, Polled, Sampling};
+use bounce_table::commands::replay::{peers, Polled, Sampling};
 
 /// One step: the time (ms), the pin's new level if it changes (`D` pressed, `U` released), and
 /// the reported change expected at that scan.
@@ -344,7 +344,7 @@ fn zmk_s_integrator_flips_at_zmk_s_scan_at_1_2_and_4_ms() {
 /// The edges (ms, pressed) `name` reports on a contact that changes at `changes` (ms; closed
 /// after the first), sampled every millisecond on the millisecond.
 fn timed(name: &str, changes: &[f64]) -> Vec<(u32, bool)> {
-    let trace = bounce_table::replay::Trace {
+    let trace = bounce_table::commands::replay::Trace {
         closed_before: false,
         changes: changes.iter().map(|t| t * 1e-3).collect(),
     };
@@ -352,7 +352,7 @@ fn timed(name: &str, changes: &[f64]) -> Vec<(u32, bool)> {
         .into_iter()
         .find(|r| r.name == name)
         .unwrap_or_else(|| panic!("no peer {name}"));
-    bounce_table::replay::edges(&mut row.sampling, &trace, 0.0, 1e-3, 0.1)
+    bounce_table::commands::replay::edges(&mut row.sampling, &trace, 0.0, 1e-3, 0.1)
         .into_iter()
         .map(|(t, closed)| {
             #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]

@@ -6,8 +6,8 @@
 
 use std::process::Command;
 
+use bounce_table::capture::scope::{self, Input, Vendor};
 use bounce_table::capture::Polarity;
-use bounce_table::scope::{self, Input, Vendor};
 use serde_json::Value;
 
 fn dir() -> String {

@@ -6,9 +6,9 @@ mod common;
 
 use std::process::{Command, Output};
 
-use bounce_table::analysis::{analyse, Settings};
-use bounce_table::eval::exact_outcome;
-use bounce_table::scenes::read;
+use bounce_table::scene::file::read;
+use bounce_table::scene::reference;
+use bounce_table::stats::analysis::{analyse, Settings};
 
 const BIN: &str = env!("CARGO_BIN_EXE_bounce-table");
 
@@ -221,7 +221,7 @@ fn the_percentile_window_covers_the_reference_for_fresh_samples() {
     let fresh = 2000;
     for i in 0..fresh {
         let input = entry.template.sample(99, i);
-        let out = exact_outcome(&input).expect("reference");
+        let out = reference::outcome(&input).expect("reference");
         if out.end_time.expect("preload") > window {
             exceed += 1;
         }

@@ -3,8 +3,8 @@
 
 use std::process::Command;
 
-use bounce_table::replay::{edges, Sampling, Trace};
-use bounce_table::taps::{sequence, Learner, Regime, TapScore, Waveforms};
+use bounce_table::commands::replay::taps::{sequence, Learner, Regime, TapScore, Waveforms};
+use bounce_table::commands::replay::{edges, Sampling, Trace};
 use contact_bounce::LearnerPrior;
 
 const BIN: &str = env!("CARGO_BIN_EXE_bounce-table");

@@ -22,9 +22,14 @@
 //! it (else the first file's name without its extension names the switch).
 
 use bounce_table::capture::EdgeName;
-use bounce_table::output::render_to;
-use bounce_table::scenes::Entries;
-use bounce_table::{calibrate, cli, eval, plot, replay, scope, table, taps};
+use bounce_table::render::output::render_to;
+use bounce_table::scene::file::Entries;
+use bounce_table::capture::{self, scope};
+use bounce_table::cli;
+use bounce_table::commands::replay::{self, taps};
+use bounce_table::commands::{calibrate, eval, table};
+use bounce_table::render::plot;
+use bounce_table::stats;
 use serde_json::{json, Value};
 
 /// Runs `command` on `input` (JSON): the JSON answer.
@@ -129,12 +134,13 @@ fn subcommand(command: &str, v: &Value) -> Result<Value, String> {
     let name = switch_name(v, &files);
     match invocation {
         cli::Invocation::Calibrate(o) => {
-            let loaded = calibrate::load_text(&o, &name, &files).map_err(|e| e.to_string())?;
-            calibrate::written(&o, &loaded).map(Value::String)
+            let loaded = capture::load_text(&o, &name, &files).map_err(|e| e.to_string())?;
+            calibrate::written(&o, &loaded, || taps::window_costs(&loaded.events, &o))
+                .map(Value::String)
         }
         cli::Invocation::Replay(request) => {
             let loaded =
-                calibrate::load_text(&request.capture, &name, &files).map_err(|e| e.to_string())?;
+                capture::load_text(&request.capture, &name, &files).map_err(|e| e.to_string())?;
             let json = request.output == replay::Output::Json;
             let (text, plots) = if request.output == replay::Output::Curve {
                 if request.taps.is_some() {
@@ -186,19 +192,19 @@ fn trace(v: &Value) -> Result<Value, String> {
         _ => return Err("not calibrate".to_owned()),
     };
     let stem = switch_name(v, &files);
-    let loaded = calibrate::load_text(&o, &stem, &files).map_err(|e| e.to_string())?;
+    let loaded = capture::load_text(&o, &stem, &files).map_err(|e| e.to_string())?;
     // The windows calibrate recommends, per switch and kind (none below its minimum of
     // events), keyed "switch/kind".
-    let groups = calibrate::group(&loaded.events, o.resolution, o.burst_gap);
+    let groups = stats::group(&loaded.events, o.resolution, o.burst_gap);
     let mut windows = serde_json::Map::new();
     for ((switch, kind), d) in &groups {
         let refs: Vec<&bounce_table::capture::Description> = d.iter().collect();
-        let w = calibrate::window(&refs, o.percentile);
+        let w = stats::window(&refs, o.percentile);
         if !w.too_few() {
             windows.insert(format!("{switch}/{}", kind.name()), json!(w.recommended()));
         }
     }
-    let calibrate::Format::Scope(vendor) = o.format else {
+    let capture::Format::Scope(vendor) = o.format else {
         let tests: Vec<Value> = loaded
             .events
             .iter()
