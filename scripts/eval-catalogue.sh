@@ -8,21 +8,21 @@ bin=target/release/bounce-table
 scenes=bounce-table/scenes/catalogue.jsonl
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-for method in exact exact-tier closed averaged map auto; do
+for method in reference exact-tier closed averaged map auto; do
   "$bin" eval --method "$method" --tolerance 0.05 < "$scenes" > "$tmp/$method.jsonl"
 done
 table=$(python3 - "$tmp" <<'PY'
 import json, sys, os
 d = sys.argv[1]
-methods = ["exact", "exact-tier", "closed", "averaged", "map", "auto"]
+methods = ["reference", "exact-tier", "closed", "averaged", "map", "auto"]
 rows = {m: [json.loads(l) for l in open(os.path.join(d, m + ".jsonl"))] for m in methods}
 def fmt(t):
     if t is None:
         return "endless"
     return f"{t*1e6:.2f} us" if t < 1e-3 else f"{t*1e3:.3f} ms"
-print("| switch | exact | exact tier | closed | averaged (8 nodes) | map | auto (5 %) |")
+print("| switch | reference | exact tier | closed | averaged (8 nodes) | map | auto (5 %) |")
 print("|---|---:|---:|---:|---:|---:|---:|")
-for i, exact in enumerate(rows["exact"]):
+for i, exact in enumerate(rows["reference"]):
     cells = [fmt(exact["end_time"])]
     for m in methods[1:]:
         r = rows[m][i]

@@ -307,8 +307,8 @@ and the field; the other lines still run, and the exit status is 1 if any line f
 /// `eval`'s arguments.
 #[derive(Args, Debug)]
 struct EvalArgs {
-    /// exact (the host's exact reference), exact-tier (the core's exact tier), map, averaged,
-    /// closed or auto
+    /// reference (the host's exact reference), exact-tier (the core's exact tier), map,
+    /// averaged, closed or auto
     #[arg(long, value_name = "M", default_value = "auto", value_parser = method)]
     method: EvalMethod,
     /// The relative error auto must promise
@@ -601,13 +601,22 @@ fn table_format(v: &str) -> Result<Format, String> {
 
 fn method(v: &str) -> Result<EvalMethod, String> {
     Ok(match v {
-        "exact" => EvalMethod::Exact,
-        "exact-tier" => EvalMethod::Tier,
+        "reference" => EvalMethod::Reference,
+        "exact-tier" => EvalMethod::ExactTier,
+        "exact" => {
+            return Err(
+                "ambiguous: say reference (the host's exact reference, which `exact` named \
+                        before) or exact-tier (the core's exact tier)"
+                    .to_owned(),
+            )
+        }
         "map" => EvalMethod::Map,
         "averaged" => EvalMethod::Averaged,
         "closed" => EvalMethod::Closed,
         "auto" => EvalMethod::Auto,
-        _ => return Err("not one of exact, exact-tier, map, averaged, closed, auto".to_owned()),
+        _ => {
+            return Err("not one of reference, exact-tier, map, averaged, closed, auto".to_owned())
+        }
     })
 }
 

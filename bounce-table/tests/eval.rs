@@ -38,7 +38,7 @@ fn catalogue() -> String {
 
 #[test]
 fn every_method_answers_the_catalogue_and_the_tiers_meet_their_expected_error() {
-    let (exact, code) = eval(&["--method", "exact"], &catalogue());
+    let (exact, code) = eval(&["--method", "reference"], &catalogue());
     assert_eq!((exact.len(), code), (8, 0));
     for method in ["closed", "averaged", "map", "auto"] {
         for precision in ["f64", "f32"] {
@@ -139,7 +139,7 @@ fn a_result_without_a_figure_names_its_approximations() {
     // end at the first burst (28 ns), where the bodies' exchange reopens the contacts for
     // milliseconds in the exact reference. No tier states a figure there, and each says why.
     let pair = r#"{"name": "pair", "gap": -1e-7, "restitution": 0.7, "closing_speed": 0.05, "two_body": {"m1": 1e-10, "c1": 1e4, "m2": 4e-10, "c2": 4.44e3}}"#;
-    let (exact, _) = eval(&["--method", "exact"], pair);
+    let (exact, _) = eval(&["--method", "reference"], pair);
     assert!(
         exact[0]["end_time"].as_f64().unwrap() > 1e-4,
         "{}",
@@ -169,8 +169,8 @@ fn a_result_without_a_figure_names_its_approximations() {
 }
 
 #[test]
-fn exact_and_map_list_their_first_impacts() {
-    for method in ["exact", "map"] {
+fn the_reference_and_map_list_their_first_impacts() {
+    for method in ["reference", "map"] {
         let (rows, _) = eval(&["--method", method], &catalogue());
         for row in rows {
             let first = row["first_impacts"].as_array().expect("first_impacts");
@@ -308,4 +308,20 @@ fn a_value_out_of_range_is_named_with_what_was_given_and_what_the_model_takes() 
             "{field} {value}: {message}"
         );
     }
+}
+
+#[test]
+fn a_bare_exact_method_is_refused_as_ambiguous() {
+    // `exact` named the host's reference before `reference` did; the core's tier is
+    // `exact-tier`. A bare `exact` is refused, naming both, rather than silently meaning one.
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_bounce-table"))
+        .args(["eval", "--method", "exact"])
+        .output()
+        .expect("run bounce-table");
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("reference") && err.contains("exact-tier"),
+        "{err}"
+    );
 }

@@ -306,7 +306,7 @@ fn eval_lines_evaluate_or_are_refused() {
     let (mut ok, mut refused) = (0, 0);
     for i in 0..cases() {
         let line = mutate(&mut rng, lines[i % lines.len()]).replace('\n', " ");
-        for method in ["closed", "map", "auto", "exact"] {
+        for method in ["closed", "map", "auto", "reference"] {
             for precision in ["f32", "f64"] {
                 let Ok(Invocation::Eval(options)) =
                     cli::parse(["eval", "--method", method, "--precision", precision])

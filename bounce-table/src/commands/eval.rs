@@ -1,7 +1,7 @@
 //! `bounce-table eval`: JSON Lines scenes on stdin, one JSON result per line on stdout.
 //!
-//! Options: `--method exact|exact-tier|map|averaged|closed|auto` (default auto; `exact` is the
-//! host's reference, `exact-tier` the core's exact tier), `--tolerance X` (for
+//! Options: `--method reference|exact-tier|map|averaged|closed|auto` (default auto; `reference`
+//! is the host's exact reference, `exact-tier` the core's exact tier), `--tolerance X` (for
 //! auto, default 0.01), `--precision f32|f64` (core tiers, default f64), `--nodes N` (averaged,
 //! default 8). A bad line gets an error object naming the line and the field; the other lines
 //! still run, and the exit status is 1 if any line failed.
@@ -20,10 +20,10 @@ use crate::scene::reference::outcome;
 /// The tier asked for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum EvalMethod {
-    /// The exact reference (host only).
-    Exact,
+    /// The host's exact reference (`contact-bounce-reference`; host only).
+    Reference,
     /// The core's exact tier (the core's `Method::Exact`, the same in firmware).
-    Tier,
+    ExactTier,
     /// The semi-discrete map.
     Map,
     /// The averaged model.
@@ -37,8 +37,8 @@ pub enum EvalMethod {
 impl EvalMethod {
     fn name(self) -> &'static str {
         match self {
-            Self::Exact => "exact",
-            Self::Tier => "exact-tier",
+            Self::Reference => "reference",
+            Self::ExactTier => "exact-tier",
             Self::Map => "map",
             Self::Averaged => "averaged",
             Self::Closed => "closed",
@@ -132,10 +132,10 @@ fn core_result<F: Float>(input: &SceneInput, options: &Options) -> Result<Value,
         },
         EvalMethod::Averaged => Method::Averaged(options.nodes),
         EvalMethod::Closed => Method::Closed,
-        EvalMethod::Tier => Method::Exact {
+        EvalMethod::ExactTier => Method::Exact {
             max_impacts: contact_bounce::tiers::EXACT_MAX_IMPACTS,
         },
-        EvalMethod::Auto | EvalMethod::Exact => {
+        EvalMethod::Auto | EvalMethod::Reference => {
             Method::Auto(Tolerance::new(F::from_f64(options.tolerance)).map_err(FieldError::from)?)
         }
     };
@@ -189,12 +189,12 @@ fn core_result<F: Float>(input: &SceneInput, options: &Options) -> Result<Value,
     Ok(out)
 }
 
-fn exact_result(input: &SceneInput) -> Result<Value, FieldError> {
+fn reference_result(input: &SceneInput) -> Result<Value, FieldError> {
     let out = outcome(input)?;
     let regime = out.regime.name();
     Ok(json!({
         "name": input.name,
-        "method": "exact",
+        "method": "reference",
         "regime": regime,
         "end_time": out.end_time,
         "impacts_total": out.impacts_total,
@@ -234,7 +234,7 @@ pub fn evaluate(
         (name, e)
     })?;
     let result = match (options.method, options.precision) {
-        (EvalMethod::Exact, _) => exact_result(&input),
+        (EvalMethod::Reference, _) => reference_result(&input),
         (_, Precision::F32) => core_result::<f32>(&input, options),
         (_, Precision::F64) => core_result::<f64>(&input, options),
     };

@@ -1,5 +1,5 @@
 //! The host's exact reference (`contact-bounce-reference`, an event-driven simulation) on a
-//! scene as the tool reads it: what the table mode, its plots and `eval --method exact` compare
+//! scene as the tool reads it: what the table mode, its plots and `eval --method reference` compare
 //! the core's tiers with.
 
 use contact_bounce::scene::Dissipation;
