@@ -127,15 +127,15 @@ impl AutoTiers {
     pub const ALL: u8 = Self::MAP | Self::AVERAGED | Self::EXACT;
 }
 
-/// The tiers Auto weighs after the closed tier.
+/// One of the tiers Auto weighs after the closed tier: an element of an [`AutoTiers`] set.
 #[derive(Debug, Clone, Copy, PartialEq)]
-enum Candidate {
+enum AutoTier {
     Map,
     Averaged,
     Exact,
 }
 
-impl Candidate {
+impl AutoTier {
     const ALL: [Self; 3] = [Self::Map, Self::Averaged, Self::Exact];
 
     const fn index(self) -> usize {
@@ -260,9 +260,9 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
         let estimate = closed.impacts_total.value();
         // (A tier outside `TIERS` is neither estimated nor run: these tests fold away.)
         let (use_map, use_averaged, use_exact) = (
-            Candidate::Map.within(TIERS),
-            Candidate::Averaged.within(TIERS),
-            Candidate::Exact.within(TIERS),
+            AutoTier::Map.within(TIERS),
+            AutoTier::Averaged.within(TIERS),
+            AutoTier::Exact.within(TIERS),
         );
         let averaged_error = if use_averaged {
             accuracy::with_reduction(self, accuracy::averaged(self, estimate))
@@ -288,9 +288,9 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
         // only if it still promises. Where none does (a kernel, a return decided by rounding,
         // f32 over many impacts), the smallest expected error wins; no tier is run twice.
         let mut order = [
-            (map_cost, Candidate::Map, fits(map_error)),
-            (averaged_cost, Candidate::Averaged, fits(averaged_error)),
-            (exact_cost, Candidate::Exact, use_exact),
+            (map_cost, AutoTier::Map, fits(map_error)),
+            (averaged_cost, AutoTier::Averaged, fits(averaged_error)),
+            (exact_cost, AutoTier::Exact, use_exact),
         ];
         // Three entries, sorted stably by cost.
         for (i, j) in [(0, 1), (1, 2), (0, 1)] {
@@ -330,7 +330,7 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
                 }
             }
         }
-        for (done, candidate) in ran.into_iter().zip(Candidate::ALL) {
+        for (done, candidate) in ran.into_iter().zip(AutoTier::ALL) {
             if !done {
                 let p = self.run::<TIERS>(candidate, &closed);
                 if rank(&p) < best_rank {
@@ -351,9 +351,9 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
     #[inline(always)]
     fn auto_costs<const TIERS: u8>(&self, closed: &Prediction<F>) -> (F, F, F) {
         let (use_map, use_averaged, use_exact) = (
-            Candidate::Map.within(TIERS),
-            Candidate::Averaged.within(TIERS),
-            Candidate::Exact.within(TIERS),
+            AutoTier::Map.within(TIERS),
+            AutoTier::Averaged.within(TIERS),
+            AutoTier::Exact.within(TIERS),
         );
         let start = self.start_impulse();
         let floor_at = |cutoff: F| {
@@ -418,15 +418,15 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
     /// a firmware names (+616 B for the restitution-only averaged firmware on the M4F).
     #[allow(clippy::inline_always)]
     #[inline(always)]
-    fn run<const TIERS: u8>(&self, candidate: Candidate, closed: &Prediction<F>) -> Prediction<F> {
+    fn run<const TIERS: u8>(&self, candidate: AutoTier, closed: &Prediction<F>) -> Prediction<F> {
         match candidate {
-            Candidate::Map if Candidate::Map.within(TIERS) => {
+            AutoTier::Map if AutoTier::Map.within(TIERS) => {
                 map::predict::<F, D, S, true>(self, crate::tiers::map::DEFAULT_MAX_IMPACTS)
             }
-            Candidate::Averaged if Candidate::Averaged.within(TIERS) => {
+            AutoTier::Averaged if AutoTier::Averaged.within(TIERS) => {
                 Averaged::new(self, Nodes::N8).predict()
             }
-            Candidate::Exact if Candidate::Exact.within(TIERS) => {
+            AutoTier::Exact if AutoTier::Exact.within(TIERS) => {
                 exact::predict::<F, D, S, true>(self, exact::EXACT_MAX_IMPACTS)
             }
             // Outside `TIERS` (never expected to promise, so run only where Auto takes the
