@@ -64,7 +64,7 @@ impl<F: Float> Preloaded<F> {
     ///
     /// # Errors
     /// As [`Scene::new`] and [`Viscous::new`]: the first invalid parameter, named (a damping
-    /// ratio of 0 is [`Reason::NotPositive`](crate::Reason::NotPositive)).
+    /// ratio of 0 is [`Reason::NotPositive`]).
     #[inline]
     pub fn scene(&self) -> Result<Scene<F, Viscous<F>, Preload>, Error> {
         Scene::new_preload(self.contact(), Viscous::new(self.damping_ratio)?)

@@ -112,7 +112,7 @@ struct Modes<F> {
 
 /// The real root's distance d = r1 + beta in (0, beta), the root of
 /// d ((d - beta)(d - beta + 2 zeta Omega) + Omega^2) = kappa, by the flights' guarded Newton
-/// ([`super::bracketed_root`]: the left side is -kappa at 0 and beta Omega^2 - kappa > 0 at
+/// ([`bracketed_root`]: the left side is -kappa at 0 and beta Omega^2 - kappa > 0 at
 /// beta). `None` if it does not settle in 200 evaluations.
 fn real_root<F: Float>(omega2: F, damping: F, kappa: F, beta: F) -> Option<F> {
     const STEPS: u32 = 200;
