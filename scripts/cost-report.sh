@@ -96,7 +96,9 @@ fi
   echo
   echo "Instructions between consecutive calls of \`cost_mark\` in \`measure/cost.rs\` (each includes"
   echo "the marker's few instructions). Debouncers: per sample, net of the sample loop (1000 samples of a"
-  echo "bouncing input; idle: 1000 samples of a settled contact, no edge in progress)."
+  echo "bouncing input; idle: 1000 samples of a settled contact, no edge in progress, each debouncer's"
+  echo "update in a function of its own with its state behind a reference, as a firmware's per-key"
+  echo "state is, net of the same function with no debouncer)."
   echo
   echo "| target | validate scene | closed | averaged N4 | averaged N8 | map | exact | auto (10 %) | debouncer (ours) | debouncr | learner | idle: ours / learner |"
   echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
