@@ -7,7 +7,7 @@
 //! ones': an edge may come up to a period apart, or, with a confirm window on a bouncing
 //! contact, up to the bounce apart; the tests measure both).
 //!
-//! Either kernel: [`Windowed`] (the 2-byte [`State`] with [`Windows`], from physics or a
+//! Either strategy: [`Windowed`] (the 2-byte [`State`] with [`Windows`], from physics or a
 //! capture) or [`Learning`] (the [`LearningState`] with a [`LearnerPrior`]).
 //!
 //! ```
@@ -45,7 +45,7 @@ use crate::{Edge, LearnerPrior, LearningState, State, Windows};
 
 /// What an [`AsyncDebouncer`] runs its samples through. Implemented by [`Windowed`] and
 /// [`Learning`].
-pub trait Kernel: sealed::Sealed {
+pub trait Strategy: sealed::Sealed {
     /// A key settled at `closed` (the contact as first read).
     fn settle(&mut self, closed: bool);
     /// One sample; the edge it debounces, if any.
@@ -88,7 +88,7 @@ impl Windowed {
     }
 }
 
-impl Kernel for Windowed {
+impl Strategy for Windowed {
     fn settle(&mut self, closed: bool) {
         self.state = State::new(closed);
     }
@@ -134,7 +134,7 @@ impl Learning {
     }
 }
 
-impl Kernel for Learning {
+impl Strategy for Learning {
     fn settle(&mut self, closed: bool) {
         self.state.settle(closed);
     }
@@ -154,14 +154,14 @@ impl Kernel for Learning {
 pub struct AsyncDebouncer<P, D, K> {
     pin: P,
     delay: D,
-    kernel: K,
+    strategy: K,
     polarity: Polarity,
     period_ns: NonZeroU32,
 }
 
-impl<P: InputPin + Wait, D: DelayNs, K: Kernel> AsyncDebouncer<P, D, K> {
-    /// Reads the pin once and settles the kernel at that level; samples every `period_ns`
-    /// nanoseconds while a change is in progress (the period the kernel's windows or prior
+impl<P: InputPin + Wait, D: DelayNs, K: Strategy> AsyncDebouncer<P, D, K> {
+    /// Reads the pin once and settles the strategy at that level; samples every `period_ns`
+    /// nanoseconds while a change is in progress (the period the strategy's windows or prior
     /// are in).
     ///
     /// # Errors
@@ -169,16 +169,16 @@ impl<P: InputPin + Wait, D: DelayNs, K: Kernel> AsyncDebouncer<P, D, K> {
     pub fn new(
         mut pin: P,
         delay: D,
-        mut kernel: K,
+        mut strategy: K,
         polarity: Polarity,
         period_ns: NonZeroU32,
     ) -> Result<Self, P::Error> {
         let closed = read(&mut pin, polarity)?;
-        kernel.settle(closed);
+        strategy.settle(closed);
         Ok(Self {
             pin,
             delay,
-            kernel,
+            strategy,
             polarity,
             period_ns,
         })
@@ -191,11 +191,11 @@ impl<P: InputPin + Wait, D: DelayNs, K: Kernel> AsyncDebouncer<P, D, K> {
     /// The pin's error (the state is unchanged by the failed read or wait).
     pub async fn next_edge(&mut self) -> Result<Edge, P::Error> {
         loop {
-            if self.kernel.is_settled() {
+            if self.strategy.is_settled() {
                 // Nothing in progress: sleep until the pin leaves the debounced level, then
                 // sample at once.
                 let closed_level_is_low = self.polarity == Polarity::ActiveLow;
-                if self.kernel.is_closed() == closed_level_is_low {
+                if self.strategy.is_closed() == closed_level_is_low {
                     self.pin.wait_for_high().await?;
                 } else {
                     self.pin.wait_for_low().await?;
@@ -206,7 +206,7 @@ impl<P: InputPin + Wait, D: DelayNs, K: Kernel> AsyncDebouncer<P, D, K> {
                 self.delay.delay_ns(self.period_ns.get()).await;
             }
             let closed = read(&mut self.pin, self.polarity)?;
-            if let Some(edge) = self.kernel.sample(closed) {
+            if let Some(edge) = self.strategy.sample(closed) {
                 return Ok(edge);
             }
         }
@@ -214,17 +214,17 @@ impl<P: InputPin + Wait, D: DelayNs, K: Kernel> AsyncDebouncer<P, D, K> {
 
     /// The debounced contact: closed or open.
     pub fn is_closed(&self) -> bool {
-        self.kernel.is_closed()
+        self.strategy.is_closed()
     }
 
-    /// The kernel (its state: what a learner learned).
-    pub const fn kernel(&self) -> &K {
-        &self.kernel
+    /// The strategy (its state: what a learner learned).
+    pub const fn strategy(&self) -> &K {
+        &self.strategy
     }
 
-    /// The pin, the delay and the kernel back.
+    /// The pin, the delay and the strategy back.
     pub fn free(self) -> (P, D, K) {
-        (self.pin, self.delay, self.kernel)
+        (self.pin, self.delay, self.strategy)
     }
 }
 
@@ -337,9 +337,9 @@ mod tests {
         }
     }
 
-    /// The edges `taps` taps give through `kernel` at 1 ms samples, each with its time (ns),
+    /// The edges `taps` taps give through `strategy` at 1 ms samples, each with its time (ns),
     /// and the pin reads taken.
-    fn run<K: Kernel>(kernel: K, taps: u64) -> (Vec<(Edge, u64)>, u64) {
+    fn run<K: Strategy>(strategy: K, taps: u64) -> (Vec<(Edge, u64)>, u64) {
         let clock = Clock {
             now: Rc::new(Cell::new(0)),
             reads: Rc::new(Cell::new(0)),
@@ -349,7 +349,7 @@ mod tests {
         let mut d = AsyncDebouncer::new(
             Pin(clock.clone()),
             Delay(clock.clone()),
-            kernel,
+            strategy,
             Polarity::ActiveLow,
             period,
         )
@@ -365,13 +365,13 @@ mod tests {
         (edges, clock.reads.get())
     }
 
-    /// The same taps polled every period through the same kernel.
-    fn polled<K: Kernel>(mut kernel: K, taps: u64) -> Vec<(Edge, u64)> {
-        kernel.settle(false);
+    /// The same taps polled every period through the same strategy.
+    fn polled<K: Strategy>(mut strategy: K, taps: u64) -> Vec<(Edge, u64)> {
+        strategy.settle(false);
         (0..end(taps) / 1_000_000)
             .filter_map(|i| {
                 let t = i * 1_000_000;
-                kernel.sample(closed_at(t, taps)).map(|e| (e, t))
+                strategy.sample(closed_at(t, taps)).map(|e| (e, t))
             })
             .collect()
     }
