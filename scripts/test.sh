@@ -129,14 +129,24 @@ scripts/c-api.sh
 
 step "cost report runs and its Cortex-M rows are current (instructions under QEMU, flash per firmware and per tier)"
 costs=$(scripts/cost-report.sh)
-# (The Uno's rows depend on the nightly of the day, installed fresh on CI: not compared.)
-python3 - "$costs" <<'PY'
+# (The Uno's rows depend on the nightly of the day, installed fresh on CI: not compared with a
+# fresh run; the guide's Uno rows are compared with the report's.)
+python3 - "$costs" "$sizes" <<'PY'
 import sys
 rows = [l for l in sys.argv[1].splitlines() if l.startswith("| thumb")]
 doc = open("docs/cost-report.md").read()
 missing = [r for r in rows if r not in doc]
 if missing or not rows:
     sys.exit("docs/cost-report.md differs from scripts/cost-report.sh (run it with --write):\n" + "\n".join(missing))
+# The firmware guide's tables quote these reports: its Cortex-M rows must be a fresh run's, its
+# Uno rows (per tier, and the cycles of the debouncers) the report's.
+fresh = set(rows) | {l for l in sys.argv[2].splitlines() if l.startswith("| thumb")}
+guide = open("docs/guide-firmware.md").read().splitlines()
+stale = [l for l in guide if l.startswith("| thumb") and l not in fresh]
+uno = [l for l in guide if l.startswith(("| avr", "| 1", "| 2", "| 3", "| 4", "| 5", "| 6", "| 7", "| 8", "| 9"))]
+stale += [l for l in uno if l not in doc.splitlines()]
+if stale or len(uno) < 11:
+    sys.exit("docs/guide-firmware.md: rows that are not the cost and size reports' (copy them from docs/cost-report.md):\n" + "\n".join(stale))
 PY
 
 step "the desk tool's Monte Carlo benchmark runs (each case once, not timed)"
