@@ -9,10 +9,12 @@ use clap::{Args, Parser, Subcommand};
 use crate::capture::scope;
 use crate::capture::Polarity;
 use crate::capture::{self, Format as CaptureFormat};
+use crate::commands::calibrate::{self, Written};
 use crate::commands::eval::{self, EvalMethod, Precision};
 use crate::commands::replay;
 use crate::render::output::Format;
 use crate::scene::priors::{self, Prior};
+use crate::stats;
 use crate::stats::analysis::Settings;
 use contact_bounce::Nodes;
 
@@ -51,7 +53,7 @@ pub enum Invocation {
     /// `replay`.
     Replay(replay::Request),
     /// `calibrate`.
-    Calibrate(capture::Options),
+    Calibrate(calibrate::Request),
     /// `--help`: the text to print.
     Help(String),
     /// `--version`.
@@ -121,39 +123,43 @@ where
             nodes: a.nodes,
             file: a.file,
         })),
-        Some(Command::Replay(a)) => Ok(Invocation::Replay(replay::Request {
-            capture: a.capture.into_options().map_err(refuse)?,
-            settings: replay::Settings {
-                period: a.period,
-                split: a.split,
-                time_scale: a.time_scale,
-                switch_type: a.switch_type,
-                fixed: a.window,
-                fastest_tap: a.min_tap,
-                learner_prior: a.prior,
-            },
-            output: a.format,
-            plot: a.plot,
-            taps: a
-                .taps
-                .then_some(crate::commands::replay::taps::TapSettings {
-                    count: a.tap_count,
-                    seed: a.tap_seed,
-                }),
-        })),
+        Some(Command::Replay(a)) => {
+            let (capture, calibration) = a.capture.into_options().map_err(refuse)?;
+            Ok(Invocation::Replay(replay::Request {
+                capture,
+                calibration,
+                settings: replay::Settings {
+                    period: a.period,
+                    split: a.split,
+                    time_scale: a.time_scale,
+                    switch_type: a.switch_type,
+                    fixed: a.window,
+                    fastest_tap: a.min_tap,
+                    learner_prior: a.prior,
+                },
+                output: a.format,
+                plot: a.plot,
+                taps: a
+                    .taps
+                    .then_some(crate::commands::replay::taps::TapSettings {
+                        count: a.tap_count,
+                        seed: a.tap_seed,
+                    }),
+            }))
+        }
         Some(Command::Calibrate(a)) => {
-            let mut options = a.capture.into_options().map_err(refuse)?;
-            (options.export, options.events) = match a.format {
-                Written::Report => (None, false),
-                Written::C => (Some(false), false),
-                Written::Rust => (Some(true), false),
-                Written::Events => (None, true),
-            };
-            options.output = a.output;
-            options.plot = a.plot;
-            options.contact_models = a.contact_models;
-            options.min_tap = a.min_tap;
-            Ok(Invocation::Calibrate(options))
+            let (capture, calibration) = a.capture.into_options().map_err(refuse)?;
+            Ok(Invocation::Calibrate(calibrate::Request {
+                capture,
+                calibration: stats::Calibration {
+                    min_tap: a.min_tap,
+                    ..calibration
+                },
+                written: a.format,
+                output: a.output,
+                plot: a.plot,
+                contact_models: a.contact_models,
+            }))
         }
     }
 }
@@ -424,15 +430,6 @@ struct CalibrateArgs {
     capture: CaptureArgs,
 }
 
-/// What `calibrate` writes.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Written {
-    Report,
-    C,
-    Rust,
-    Events,
-}
-
 /// The capture and how to read and calibrate it (`calibrate`'s, and `replay`'s).
 #[derive(Args, Debug)]
 struct CaptureArgs {
@@ -463,7 +460,7 @@ struct CaptureArgs {
     burst_gap: f64,
     /// In CSV/VCD streams, a quiet gap longer than this (s) starts a new event
     #[arg(long = "event-gap", visible_alias = "quiet", value_name = "SECONDS", default_value_t = 0.2, value_parser = seconds)]
-    quiet: f64,
+    event_gap: f64,
     /// The VCD signal (default: the only 1-bit one)
     #[arg(long, value_name = "NAME")]
     signal: Option<String>,
@@ -485,8 +482,9 @@ struct CaptureArgs {
 }
 
 impl CaptureArgs {
-    /// `calibrate`'s options for this capture (what is written left at the report).
-    fn into_options(self) -> Result<capture::Options, String> {
+    /// The capture to read and how, and how its windows are calibrated (`--min-tap` apart:
+    /// its meaning is the command's).
+    fn into_options(self) -> Result<(capture::Options, stats::Calibration), String> {
         let format = match self.capture_format {
             Some(f) => f,
             None if std::path::Path::new(&self.file).is_dir() => CaptureFormat::Scope(None),
@@ -507,12 +505,10 @@ impl CaptureArgs {
             (None, Some((low, high))) => scope::Input::Volts(low, high),
             (None, None) => scope::Input::Swing,
         };
-        Ok(capture::Options {
+        let capture = capture::Options {
             file: self.file,
             format,
-            resolution: self.resolution,
-            burst_gap: self.burst_gap,
-            quiet: self.quiet,
+            event_gap: self.event_gap,
             signal: self.signal,
             channel: self.channel,
             input,
@@ -522,15 +518,15 @@ impl CaptureArgs {
                 Polarity::ActiveLow
             },
             skip_sections: self.skip_section,
+        };
+        let calibration = stats::Calibration {
+            resolution: self.resolution,
+            burst_gap: self.burst_gap,
             percentile: self.percentile / 100.0,
             seed: self.seed,
-            export: None,
-            output: None,
-            plot: None,
-            events: false,
-            contact_models: false,
             min_tap: None,
-        })
+        };
+        Ok((capture, calibration))
     }
 }
 
@@ -704,7 +700,7 @@ fn written(v: &str) -> Result<Written, String> {
 mod tests {
     use super::*;
 
-    fn calibrate(args: &[&str]) -> Result<capture::Options, Refusal> {
+    fn calibrate(args: &[&str]) -> Result<calibrate::Request, Refusal> {
         match parse(std::iter::once("calibrate").chain(args.iter().copied()))? {
             Invocation::Calibrate(o) => Ok(o),
             other => panic!("{other:?}"),
@@ -714,32 +710,40 @@ mod tests {
     #[test]
     fn calibrates_options_have_stated_defaults_and_name_the_bad_one() {
         let o = calibrate(&["capture.vcd"]).expect("valid");
-        assert_eq!(o.format, CaptureFormat::Vcd);
+        assert_eq!(o.capture.format, CaptureFormat::Vcd);
         assert_eq!(
-            (o.resolution, o.burst_gap, o.quiet, o.percentile),
-            (3e-6, 5e-3, 0.2, 0.99)
+            (o.calibration.resolution, o.calibration.burst_gap),
+            (3e-6, 5e-3)
         );
+        assert_eq!((o.capture.event_gap, o.calibration.percentile), (0.2, 0.99));
+        assert_eq!((o.written, o.calibration.min_tap), (Written::Report, None));
         let o =
             calibrate(&["--burst-gap", "2e-2", "--percentile", "99.9", "c.csv"]).expect("valid");
         // A .csv file is recognised by its header when it is read: a scope's or levels.
-        assert_eq!((o.burst_gap, o.format), (2e-2, CaptureFormat::Scope(None)));
-        assert!((o.percentile - 0.999).abs() < 1e-15);
+        assert_eq!(
+            (o.calibration.burst_gap, o.capture.format),
+            (2e-2, CaptureFormat::Scope(None))
+        );
+        assert!((o.calibration.percentile - 0.999).abs() < 1e-15);
         let o =
             calibrate(&["--capture-format", "rigol", "--channel", "2", "c.csv"]).expect("valid");
         assert_eq!(
-            (o.format, o.channel.as_deref()),
+            (o.capture.format, o.capture.channel.as_deref()),
             (CaptureFormat::Scope(Some(scope::Vendor::Rigol)), Some("2"))
         );
-        assert_eq!(o.input, scope::Input::Swing);
+        assert_eq!(o.capture.input, scope::Input::Swing);
         let o = calibrate(&["--input", "rp2040", "c.csv"]).expect("valid");
         assert_eq!(
-            o.input,
+            o.capture.input,
             scope::Input::Preset(scope::preset("rp2040").expect("a preset"), None)
         );
         let o = calibrate(&["--thresholds", "0.8,2", "c.csv"]).expect("valid");
-        assert_eq!(o.input, scope::Input::Volts(0.8, 2.0));
-        let o = calibrate(&["--format=rust", "c.csv"]).expect("valid");
-        assert_eq!((o.export, o.events), (Some(true), false));
+        assert_eq!(o.capture.input, scope::Input::Volts(0.8, 2.0));
+        let o = calibrate(&["--format=rust", "--min-tap", "0.03", "c.csv"]).expect("valid");
+        assert_eq!(
+            (o.written, o.calibration.min_tap),
+            (Written::Rust, Some(0.03))
+        );
         // A repeatable option keeps every value; any other, the last one given.
         let o = calibrate(&[
             "--skip-section",
@@ -753,7 +757,7 @@ mod tests {
         ])
         .expect("valid");
         assert_eq!(
-            (o.skip_sections.as_slice(), o.seed),
+            (o.capture.skip_sections.as_slice(), o.calibration.seed),
             (&["Fast".to_owned(), "Slow".to_owned()][..], 7)
         );
         for (bad, named) in [

@@ -100,7 +100,7 @@ fn taps_main(
         eprintln!("bounce-table replay: --format curve is the isolated replay's learning curve; with --taps, give table or json");
         return ExitCode::from(2);
     }
-    let lines = match taps::run(events, &request.capture, &request.settings, t) {
+    let lines = match taps::run(events, &request.calibration, &request.settings, t) {
         Ok(lines) => lines,
         Err(e) => {
             eprintln!("bounce-table replay: {e}");
@@ -159,7 +159,7 @@ fn replay_main(request: &replay::Request) -> ExitCode {
             }
         };
     }
-    let lines = match replay::run(&events, &request.capture, &request.settings) {
+    let lines = match replay::run(&events, &request.calibration, &request.settings) {
         Ok(lines) => lines,
         Err(e) => {
             eprintln!("bounce-table replay: {e}");
@@ -180,7 +180,10 @@ fn replay_main(request: &replay::Request) -> ExitCode {
                 skipped,
                 analog,
             };
-            out!("{}", replay::report(&loaded, request.capture.quiet, &lines));
+            out!(
+                "{}",
+                replay::report(&loaded, request.capture.event_gap, &lines)
+            );
         }
     }
     ExitCode::SUCCESS
@@ -248,9 +251,10 @@ fn eval_main(options: &eval::Options) -> ExitCode {
 }
 
 /// `bounce-table calibrate`.
-fn calibrate_main(options: &capture::Options) -> ExitCode {
-    if let Some(output) = &options.output {
-        let same = std::fs::canonicalize(&options.file)
+fn calibrate_main(request: &calibrate::Request) -> ExitCode {
+    let c = &request.calibration;
+    if let Some(output) = &request.output {
+        let same = std::fs::canonicalize(&request.capture.file)
             .ok()
             .zip(std::fs::canonicalize(output).ok())
             .is_some_and(|(a, b)| a == b);
@@ -266,7 +270,7 @@ fn calibrate_main(options: &capture::Options) -> ExitCode {
         events,
         skipped,
         analog,
-    } = match capture::load(options) {
+    } = match capture::load(&request.capture) {
         Ok(x) => x,
         Err(e) => {
             eprintln!("bounce-table calibrate: {e}");
@@ -279,15 +283,15 @@ fn calibrate_main(options: &capture::Options) -> ExitCode {
         analog,
     };
     // The plots are files of their own; the text is what the library writes.
-    if let (Some(dir), false, None) = (&options.plot, options.events, options.export) {
-        let groups = stats::group(&loaded.events, options.resolution, options.burst_gap);
+    if let (Some(dir), calibrate::Written::Report) = (&request.plot, request.written) {
+        let groups = stats::group(&loaded.events, c.resolution, c.burst_gap);
         for ((switch, kind), d) in &groups {
             let name = format!(
                 "{dir}/{}-{}.svg",
                 identifier(switch).to_lowercase(),
                 kind.name()
             );
-            let svg = calibrate::plot(switch, *kind, d, options.percentile);
+            let svg = calibrate::plot(switch, *kind, d, c.percentile);
             if let Err(e) =
                 std::fs::create_dir_all(dir).and_then(|()| write_atomically(&name, &svg))
             {
@@ -296,16 +300,15 @@ fn calibrate_main(options: &capture::Options) -> ExitCode {
             }
         }
     }
-    let text = match calibrate::written(options, &loaded, || {
-        taps::window_costs(&loaded.events, options)
-    }) {
+    let text = match calibrate::written(request, &loaded, || taps::window_costs(&loaded.events, c))
+    {
         Ok(text) => text,
         Err(e) => {
             eprintln!("bounce-table calibrate: {}", printable(&e));
             return ExitCode::from(2);
         }
     };
-    match &options.output {
+    match &request.output {
         Some(path) => match write_atomically(path, &text) {
             Ok(()) => ExitCode::SUCCESS,
             Err(e) => {

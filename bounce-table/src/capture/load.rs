@@ -1,4 +1,4 @@
-//! What `calibrate` is asked for: its options and the capture they name.
+//! Which capture to read and how: its options, its format, and the reader they choose.
 
 use super::event::{drop_several_presses, CaptureError, Event, Polarity, Skipped};
 use super::{csv::read_csv, jsonl::read_jsonl, scope, vcd::read_vcd};
@@ -17,20 +17,18 @@ pub enum Format {
     Scope(Option<scope::Vendor>),
 }
 
-/// What `calibrate` was asked for.
+/// How to read a capture: the file, its format, and how its changes are cut into events. What
+/// is done with the events (`calibrate`'s windows, `replay`'s scores) is the command's.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Options {
     /// The capture file.
     pub file: String,
     /// Its format (from the extension unless given).
     pub format: Format,
-    /// Intervals shorter than this are unresolved (s).
-    pub resolution: f64,
-    /// A quiet interval at least this long ends a burst (s).
-    pub burst_gap: f64,
     /// A change more than this after the previous one starts a new event in a stream (s); a
-    /// JSON Lines event with a quiet interval this long inside holds several presses.
-    pub quiet: f64,
+    /// JSON Lines event with a quiet interval this long inside holds several presses
+    /// (`--event-gap`).
+    pub event_gap: f64,
     /// The VCD signal.
     pub signal: Option<String>,
     /// An analog capture's channel (the only one when `None`).
@@ -41,23 +39,6 @@ pub struct Options {
     pub polarity: Polarity,
     /// JSON Lines sections to leave out.
     pub skip_sections: Vec<String>,
-    /// The windows' percentile (0..1).
-    pub percentile: f64,
-    /// The random split's seed.
-    pub seed: u64,
-    /// Print the windows as C (`Some(false)`) or Rust (`Some(true)`) instead of the report
-    /// (`--format c|rust`).
-    pub export: Option<bool>,
-    /// Write the output there, completely or not at all (else standard output).
-    pub output: Option<String>,
-    /// Write one SVG per switch and kind there.
-    pub plot: Option<String>,
-    /// Print every event's description (CSV) instead of the report (`--format csv`).
-    pub events: bool,
-    /// Also fit the real-contact models (slow: tens of seconds).
-    pub contact_models: bool,
-    /// No real tap is shorter than this (s): windows are capped at it (`--min-tap`).
-    pub min_tap: Option<f64>,
 }
 
 /// What [`load`] read: the events, what it left out, and for an analog capture its report.
@@ -140,7 +121,7 @@ pub fn load_text(
         loaded.skipped.add(skipped);
     }
     let events = std::mem::take(&mut loaded.events);
-    loaded.events = drop_several_presses(events, o.quiet, &mut loaded.skipped);
+    loaded.events = drop_several_presses(events, o.event_gap, &mut loaded.skipped);
     Ok(loaded)
 }
 
@@ -159,9 +140,9 @@ fn read_one(
     };
     let events = match format {
         Format::Jsonl => return read_jsonl(file, text, &o.skip_sections),
-        Format::Csv => read_csv(file, text, o.polarity)?.segment(name, o.quiet),
+        Format::Csv => read_csv(file, text, o.polarity)?.segment(name, o.event_gap),
         Format::Vcd => {
-            read_vcd(file, text, o.signal.as_deref(), o.polarity)?.segment(name, o.quiet)
+            read_vcd(file, text, o.signal.as_deref(), o.polarity)?.segment(name, o.event_gap)
         }
         Format::Scope(vendor) => {
             let (streams, report) = scope::load(
@@ -179,7 +160,7 @@ fn read_one(
             let acquisitions = streams.len();
             let mut events = Vec::new();
             for (k, stream) in streams.iter().enumerate() {
-                for mut e in stream.segment(name, o.quiet) {
+                for mut e in stream.segment(name, o.event_gap) {
                     let mut at = Vec::new();
                     if several {
                         at.push(base.clone());

@@ -19,5 +19,6 @@ pub use heldout::{
 };
 pub use predictive::{Part, Predictive, MIN_FIT};
 pub use window::{
-    chronological_cover, earlier_count, window, CaptureWindow, Cover, FAR_BEYOND, MIN_EVENTS,
+    chronological_cover, earlier_count, window, Calibration, CaptureWindow, Cover, FAR_BEYOND,
+    MIN_EVENTS,
 };

@@ -3,6 +3,21 @@
 use super::fit::BounceModel;
 use crate::capture;
 
+/// How events are timed and windows fitted to them: what `calibrate` and `replay` share.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Calibration {
+    /// Intervals shorter than this are unresolved (s; `--resolution`).
+    pub resolution: f64,
+    /// A quiet interval at least this long ends a burst (s; `--burst-gap`).
+    pub burst_gap: f64,
+    /// The windows' percentile (0..1; `--percentile` divided by 100).
+    pub percentile: f64,
+    /// The random held-out split's seed (`--seed`).
+    pub seed: u64,
+    /// No real tap is shorter than this (s): windows are capped at it (`--min-tap`).
+    pub min_tap: Option<f64>,
+}
+
 /// A debounce window from a capture: the fitted model's predictive percentile, never below
 /// the largest bounce observed.
 #[derive(Debug, Clone, Copy, PartialEq)]

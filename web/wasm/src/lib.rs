@@ -22,13 +22,13 @@
 //! it (else the first file's name without its extension names the switch).
 
 use bounce_table::capture::EdgeName;
-use bounce_table::render::output::render_to;
-use bounce_table::scene::file::Entries;
 use bounce_table::capture::{self, scope};
 use bounce_table::cli;
 use bounce_table::commands::replay::{self, taps};
 use bounce_table::commands::{calibrate, eval, table};
+use bounce_table::render::output::render_to;
 use bounce_table::render::plot;
+use bounce_table::scene::file::Entries;
 use bounce_table::stats;
 use serde_json::{json, Value};
 
@@ -134,9 +134,12 @@ fn subcommand(command: &str, v: &Value) -> Result<Value, String> {
     let name = switch_name(v, &files);
     match invocation {
         cli::Invocation::Calibrate(o) => {
-            let loaded = capture::load_text(&o, &name, &files).map_err(|e| e.to_string())?;
-            calibrate::written(&o, &loaded, || taps::window_costs(&loaded.events, &o))
-                .map(Value::String)
+            let loaded =
+                capture::load_text(&o.capture, &name, &files).map_err(|e| e.to_string())?;
+            calibrate::written(&o, &loaded, || {
+                taps::window_costs(&loaded.events, &o.calibration)
+            })
+            .map(Value::String)
         }
         cli::Invocation::Replay(request) => {
             let loaded =
@@ -149,7 +152,7 @@ fn subcommand(command: &str, v: &Value) -> Result<Value, String> {
                 let curves = replay::learning_curves(&loaded.events, &request.settings)?;
                 (replay::curve_csv(&curves), Vec::new())
             } else if let Some(t) = &request.taps {
-                let lines = taps::run(&loaded.events, &request.capture, &request.settings, t)?;
+                let lines = taps::run(&loaded.events, &request.calibration, &request.settings, t)?;
                 let text = if json {
                     taps::json(&lines)
                 } else {
@@ -157,11 +160,11 @@ fn subcommand(command: &str, v: &Value) -> Result<Value, String> {
                 };
                 (text, taps::plots(&lines))
             } else {
-                let lines = replay::run(&loaded.events, &request.capture, &request.settings)?;
+                let lines = replay::run(&loaded.events, &request.calibration, &request.settings)?;
                 let text = if json {
                     replay::json(&lines)
                 } else {
-                    replay::report(&loaded, request.capture.quiet, &lines)
+                    replay::report(&loaded, request.capture.event_gap, &lines)
                 };
                 (text, replay::plots(&lines))
             };
@@ -192,19 +195,23 @@ fn trace(v: &Value) -> Result<Value, String> {
         _ => return Err("not calibrate".to_owned()),
     };
     let stem = switch_name(v, &files);
-    let loaded = capture::load_text(&o, &stem, &files).map_err(|e| e.to_string())?;
+    let loaded = capture::load_text(&o.capture, &stem, &files).map_err(|e| e.to_string())?;
     // The windows calibrate recommends, per switch and kind (none below its minimum of
     // events), keyed "switch/kind".
-    let groups = stats::group(&loaded.events, o.resolution, o.burst_gap);
+    let groups = stats::group(
+        &loaded.events,
+        o.calibration.resolution,
+        o.calibration.burst_gap,
+    );
     let mut windows = serde_json::Map::new();
     for ((switch, kind), d) in &groups {
         let refs: Vec<&bounce_table::capture::Description> = d.iter().collect();
-        let w = stats::window(&refs, o.percentile);
+        let w = stats::window(&refs, o.calibration.percentile);
         if !w.too_few() {
             windows.insert(format!("{switch}/{}", kind.name()), json!(w.recommended()));
         }
     }
-    let capture::Format::Scope(vendor) = o.format else {
+    let capture::Format::Scope(vendor) = o.capture.format else {
         let tests: Vec<Value> = loaded
             .events
             .iter()
@@ -224,13 +231,13 @@ fn trace(v: &Value) -> Result<Value, String> {
     // by one, as the CLI reads them).
     let mut acquisitions = Vec::new();
     for (name, text) in &files {
-        let traces =
-            scope::read(name, text, vendor, o.channel.as_deref()).map_err(|e| e.to_string())?;
+        let traces = scope::read(name, text, vendor, o.capture.channel.as_deref())
+            .map_err(|e| e.to_string())?;
         let swing = scope::swing(name, &traces).map_err(|e| e.to_string())?;
         let (low, high, how) =
-            scope::thresholds(name, &o.input, &swing).map_err(|e| e.to_string())?;
+            scope::thresholds(name, &o.capture.input, &swing).map_err(|e| e.to_string())?;
         for t in &traces {
-            let levels = scope::to_levels(t, low, high, &swing, o.polarity);
+            let levels = scope::to_levels(t, low, high, &swing, o.capture.polarity);
             let step = (t.times.len() / 4000).max(1);
             let pick = |xs: &[f64]| xs.iter().step_by(step).copied().collect::<Vec<f64>>();
             let kind = if levels.stream.closed_before {

@@ -6,9 +6,11 @@
 mod export;
 mod plot;
 mod report;
+mod request;
 mod written;
 
 pub use export::export;
 pub use plot::plot;
 pub use report::{assess, by_section, describe, summary};
+pub use request::{Request, Written};
 pub use written::written;

@@ -27,8 +27,8 @@ use std::collections::BTreeMap;
 
 use contact_bounce::Windows;
 
+use crate::capture::{self, Loaded};
 use crate::capture::{Edge, Event};
-use crate::capture::{Loaded, Options};
 use crate::render::output::time;
 use crate::render::plot::{Axis, Plot, Quantity, Series, Style};
 use crate::scene::priors::{self, Prior};
@@ -83,7 +83,11 @@ impl Line {
 /// The calibrated window (s) of each switch and kind: `calibrate` on the earlier tests
 /// (`s.split`), their times multiplied by `s.time_scale`, at most `c.min_tap` where given.
 #[must_use]
-pub fn calibrated(events: &[Event], c: &Options, s: &Settings) -> BTreeMap<(String, Edge), f64> {
+pub fn calibrated(
+    events: &[Event],
+    c: &stats::Calibration,
+    s: &Settings,
+) -> BTreeMap<(String, Edge), f64> {
     let mut by: BTreeMap<(&str, Edge), Vec<&Event>> = BTreeMap::new();
     for e in events {
         by.entry((e.switch.as_str(), e.kind)).or_default().push(e);
@@ -116,7 +120,7 @@ pub fn calibrated(events: &[Event], c: &Options, s: &Settings) -> BTreeMap<(Stri
 ///
 /// # Errors
 /// A calibrated or prior window longer than our debouncer's counter holds at `period`.
-pub fn run(events: &[Event], c: &Options, s: &Settings) -> Result<Vec<Line>, String> {
+pub fn run(events: &[Event], c: &stats::Calibration, s: &Settings) -> Result<Vec<Line>, String> {
     let mut by: BTreeMap<(&str, Edge), Vec<&Event>> = BTreeMap::new();
     for e in events {
         by.entry((e.switch.as_str(), e.kind)).or_default().push(e);
@@ -584,8 +588,10 @@ pub enum Output {
 /// What `replay` was asked for.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Request {
-    /// The capture and how to read and calibrate it (`calibrate`'s options).
-    pub capture: Options,
+    /// The capture and how to read it.
+    pub capture: capture::Options,
+    /// How its events are timed and the calibrated windows fitted (`calibrate`'s).
+    pub calibration: stats::Calibration,
     /// The replay's own settings.
     pub settings: Settings,
     /// How to print.

@@ -25,7 +25,6 @@ use std::collections::BTreeMap;
 
 use contact_bounce::{LearnerPrior, LearningState, Windows};
 
-use crate::capture::Options;
 use crate::capture::{Edge, Event};
 use crate::commands::replay::{self, edges, peers, Polled, Row, Sampling, Trace};
 use crate::render::output::time;
@@ -504,7 +503,7 @@ fn regime_seed(seed: u64, j: usize) -> u64 {
 /// As [`rows`].
 pub fn run(
     events: &[Event],
-    c: &Options,
+    c: &stats::Calibration,
     s: &replay::Settings,
     t: &TapSettings,
 ) -> Result<Vec<TapLine>, String> {
@@ -685,7 +684,7 @@ pub fn plot(lines: &[&TapLine]) -> String {
 /// samples, on 1,000 taps of each regime spliced from the later half (never the tests they were
 /// fitted on). Cells: missed taps / false edges.
 #[must_use]
-pub fn window_costs(events: &[Event], c: &Options) -> String {
+pub fn window_costs(events: &[Event], c: &stats::Calibration) -> String {
     let s = replay::Settings {
         period: 1e-3,
         split: 0.5,
