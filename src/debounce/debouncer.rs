@@ -167,11 +167,14 @@ impl State {
     /// any. A handful of integer operations; no failure.
     pub fn update(&mut self, closed: bool, windows: &Windows) -> Option<Edge> {
         let stable = self.is_closed();
-        let count = self.0 & COUNT;
-        let (edge, window) = if stable {
-            (Edge::Release, windows.release)
-        } else {
-            (Edge::Press, windows.press)
+        // The edge and its window are chosen only once a change is seen: almost every sample
+        // agrees with a settled contact (a key is idle far longer than it bounces).
+        let change = |stable: bool| {
+            if stable {
+                (Edge::Release, windows.release)
+            } else {
+                (Edge::Press, windows.press)
+            }
         };
         match windows.mode {
             Mode::Confirm => {
@@ -179,7 +182,8 @@ impl State {
                     self.0 &= CLOSED;
                     return None;
                 }
-                let count = count + 1; // <= MAX_TICKS + 1: no overflow of the 15 bits
+                let (edge, window) = change(stable);
+                let count = (self.0 & COUNT) + 1; // <= MAX_TICKS + 1: no overflow of the 15 bits
                 if count >= window {
                     self.0 = if closed { CLOSED } else { 0 };
                     Some(edge)
@@ -189,13 +193,14 @@ impl State {
                 }
             }
             Mode::HoldOff => {
-                if count > 0 {
+                if self.0 & COUNT > 0 {
                     self.0 -= 1;
                     return None;
                 }
                 if closed == stable {
                     return None;
                 }
+                let (edge, window) = change(stable);
                 // The window that follows this edge: the bounce of the change just seen.
                 self.0 = (if closed { CLOSED } else { 0 }) | window.min(COUNT);
                 Some(edge)
