@@ -3,7 +3,7 @@
 //! code is linked), Auto at 10 %, its window, and a recorded press of the relay through the
 //! debouncer in both modes (`common/trace_report.rs`, the lines `debounce_trace` prints for the
 //! relay with its damping). Auto on a damped scene links every damped tier and does not fit
-//! the Uno's 32 KB (`auto` in docs/cost-report.md).
+//! the Uno's 32 KB (`auto` in docs/reports/cost-report.md).
 //!
 //! Build with the nightly toolchain for `avr-none` (`scripts/uno.sh` does it and runs it in
 //! simavr); on the host it prints the same lines, which is what CI compares.

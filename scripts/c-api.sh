@@ -12,7 +12,7 @@
 #    avr-none (nightly), runs in simavr and must print the host's lean-path and debouncer lines.
 # Neither firmware may link panic code (the library and the core have no panicking path).
 # It also measures what fits the Uno from C: each entry point alone in a minimal program, linked
-# as uno.c is (`--write` saves that table to docs/c-api-uno.md).
+# as uno.c is (`--write` saves that table to docs/reports/c-api-uno.md).
 # The header itself is checked current by `cargo test -p contact-bounce-c`.
 #
 # Usage: scripts/c-api.sh [--write]
@@ -199,12 +199,12 @@ if [ "${1:-}" = "--write" ]; then
     echo "A \`cb_switch\` may be a gap or a preload, with or without damping, so every entry point that"
     echo "takes one links both sides' code and the undamped sums; the \`cb_preload_*\` ones link no gap's"
     echo "code. From Rust, a scene typed by its sign and its damping (\`Scene<f32, Viscous<f32>, Preload>\`)"
-    echo "links less: \`docs/cost-report.md\` has each tier's firmware on the Uno that way."
+    echo "links less: \`docs/reports/cost-report.md\` has each tier's firmware on the Uno that way."
     echo
     echo "The Uno example, \`contact-bounce-c/examples/c/uno.c\` (both lean paths, the closed tier through"
     echo "\`cb_preload_seconds_closed\`, the debouncer and the learner, with its UART and the lines it prints):"
     echo "$uno_text bytes of code and $uno_data of initialised data, $((uno_text + uno_data)) bytes of flash."
-  } > docs/c-api-uno.md
+  } > docs/reports/c-api-uno.md
 fi
 
 # The Arduino library layout, and its example sketch compiled as the Arduino build does.

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Regenerates docs/calibration.md: `bounce-table calibrate` on the shared real capture
+# Regenerates docs/reports/calibration.md: `bounce-table calibrate` on the shared real capture
 # (../shared/data/bouncy-button-uno.jsonl, not part of the repository: see its README for the
-# source and licence). Prints the document; --write writes docs/calibration.md.
+# source and licence). Prints the document; --write writes docs/reports/calibration.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 capture=${CAPTURE:-../shared/data/bouncy-button-uno.jsonl}
@@ -50,9 +50,9 @@ longer than \`--event-gap\` (0.2 s) inside holds several presses. The report say
 
 $report
 
-Plots (\`--plot docs/calibration\`): the observed bounce distribution of each switch and kind
+Plots (\`--plot docs/reports/calibration\`): the observed bounce distribution of each switch and kind
 against the fitted model's (and the impact model's alone where it holds), on a log time axis,
-with the recommended window marked, in \`docs/calibration/\`.
+with the recommended window marked, in \`docs/reports/calibration/\`.
 
 ### As a C header
 
@@ -180,7 +180,7 @@ $heldout
   is, not of a closer fit to this capture (in sample, the floor's P99 is a little further from
   the observed: the model table); the earlier half's window is 56.2 ms, 1.63 times the largest
   later release. It rests on one late burst, as the burst gap's table shows.
-  \`docs/replay.md\` replays those windows through the debouncer.
+  \`docs/reports/replay.md\` replays those windows through the debouncer.
 
 ## Not done
 
@@ -194,8 +194,8 @@ bounce, but the impact model and the reopening are models of a closing.
 MD
 )
 if [ "${1:-}" = "--write" ]; then
-  printf '%s\n' "$doc" > docs/calibration.md
-  run --plot docs/calibration > /dev/null
+  printf '%s\n' "$doc" > docs/reports/calibration.md
+  run --plot docs/reports/calibration > /dev/null
 else
   printf '%s\n' "$doc"
 fi

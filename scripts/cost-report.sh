@@ -9,7 +9,7 @@
 # panicking path; the Uno's printing examples are not checked, core's integer formatting there
 # links a bounds check of its own).
 #
-# Usage: scripts/cost-report.sh [--write]   (--write saves docs/cost-report.md)
+# Usage: scripts/cost-report.sh [--write]   (--write saves docs/reports/cost-report.md)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -495,6 +495,6 @@ fi
 
 cat "$out"
 if [ "${1:-}" = "--write" ]; then
-  cp "$out" docs/cost-report.md
+  cp "$out" docs/reports/cost-report.md
 fi
 exit "$failed"

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # `bounce-table eval` on the eight switches of docs/physics.md sec. 7 with every method: prints a
-# markdown table of the bounce end times (and writes docs/eval-catalogue.md with --write).
+# markdown table of the bounce end times (and writes docs/reports/eval-catalogue.md with --write).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo build --quiet --release -p bounce-table
@@ -49,5 +49,5 @@ if [ "${1:-}" = "--write" ]; then
     echo "(relative for the exact tier, in percent for the others)."
     echo
     echo "$table"
-  } > docs/eval-catalogue.md
+  } > docs/reports/eval-catalogue.md
 fi

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Regenerates docs/replay.md: `bounce-table replay` on the shared real capture
-# (../shared/data/bouncy-button-uno.jsonl, not part of the repository: see docs/calibration.md
+# Regenerates docs/reports/replay.md: `bounce-table replay` on the shared real capture
+# (../shared/data/bouncy-button-uno.jsonl, not part of the repository: see docs/reports/calibration.md
 # for its source and licence), and the checks of what the rows must show. Prints the document;
-# --write writes docs/replay.md and the Pareto plots in docs/replay/.
+# --write writes docs/reports/replay.md and the Pareto plots in docs/reports/replay/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 capture=${CAPTURE:-../shared/data/bouncy-button-uno.jsonl}
@@ -160,7 +160,7 @@ bounce-table replay --taps --window 157e-3 --switch-type push-button ../shared/d
 bounce-table replay --taps --switch-type push-button --format json --sample-period 1e-4 --prior 5e-3 ../shared/data/bouncy-button-uno.jsonl   # priors 5-157 ms, 1 and 0.1 ms
 \`\`\`
 
-The capture is the one of \`docs/calibration.md\`: a push button and a snap-action rocker, 230
+The capture is the one of \`docs/reports/calibration.md\`: a push button and a snap-action rocker, 230
 press/release tests logged by an Arduino Uno. For each switch and kind, the earlier half of the
 tests in capture order calibrates; the later half is replayed. Every polled debouncer samples
 every 1 ms (the scan rate of the keyboard firmwares) at a phase that changes from test to test
@@ -271,15 +271,15 @@ all its tests, and the same rule fitted on the earlier half against the later ha
 
 $summary
 
-Plots (\`--plot docs/replay\`): false edges against latency P99 per switch and kind, ours and
-the peers, with the Pareto front and the rows on it named, in \`docs/replay/\`; with \`--taps\`,
+Plots (\`--plot docs/reports/replay\`): false edges against latency P99 per switch and kind, ours and
+the peers, with the Pareto front and the rows on it named, in \`docs/reports/replay/\`; with \`--taps\`,
 missed taps against false edges per switch and regime (\`*-taps.svg\`).
 MD
 )
 if [ "${1:-}" = "--write" ]; then
-  printf '%s\n' "$doc" > docs/replay.md
-  run --plot docs/replay > /dev/null
-  run --taps --plot docs/replay > /dev/null
+  printf '%s\n' "$doc" > docs/reports/replay.md
+  run --plot docs/reports/replay > /dev/null
+  run --taps --plot docs/reports/replay > /dev/null
 else
   printf '%s\n' "$doc"
 fi

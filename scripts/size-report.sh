@@ -3,7 +3,7 @@
 # each links. Fails if the restitution-only firmware links any sine (libm's or the series): a
 # mechanism a scene lacks must cost no flash.
 #
-# Usage: scripts/size-report.sh [--write]   (--write also saves docs/size-report.md)
+# Usage: scripts/size-report.sh [--write]   (--write also saves docs/reports/size-report.md)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -48,7 +48,7 @@ if [ "${1:-}" = "--write" ]; then
     echo
     echo "\"sine linked\" lists the sine/cosine code found in the firmware's debug information"
     echo "(which names inlined functions too): the restitution-only firmware must have none."
-  } > docs/size-report.md
+  } > docs/reports/size-report.md
 fi
 rm -f "$report"
 exit "$failed"

@@ -78,13 +78,13 @@ for target in "${targets[@]}"; do
 done
 cargo +"$msrv" test -p contact-bounce --target-dir target/msrv 2>&1 | tee -a "$log"
 
-step "firmware size report (fails if restitution-only firmware links a sine; docs/guide-firmware.md and docs/size-report.md current)"
+step "firmware size report (fails if restitution-only firmware links a sine; docs/guide-firmware.md and docs/reports/size-report.md current)"
 sizes=$(scripts/size-report.sh)
 echo "$sizes"
 python3 - "$sizes" <<'PY'
 import sys
 rows = [l for l in sys.argv[1].splitlines() if l.startswith("| thumb")]
-for path in ("docs/guide-firmware.md", "docs/size-report.md"):
+for path in ("docs/guide-firmware.md", "docs/reports/size-report.md"):
     text = open(path).read()
     missing = [r for r in rows if r not in text]
     if missing or not rows:
@@ -134,10 +134,10 @@ costs=$(scripts/cost-report.sh)
 python3 - "$costs" "$sizes" <<'PY'
 import sys
 rows = [l for l in sys.argv[1].splitlines() if l.startswith("| thumb")]
-doc = open("docs/cost-report.md").read()
+doc = open("docs/reports/cost-report.md").read()
 missing = [r for r in rows if r not in doc]
 if missing or not rows:
-    sys.exit("docs/cost-report.md differs from scripts/cost-report.sh (run it with --write):\n" + "\n".join(missing))
+    sys.exit("docs/reports/cost-report.md differs from scripts/cost-report.sh (run it with --write):\n" + "\n".join(missing))
 # The firmware guide's tables quote these reports: its Cortex-M rows must be a fresh run's, its
 # Uno rows (per tier, and the cycles of the debouncers) the report's.
 fresh = set(rows) | {l for l in sys.argv[2].splitlines() if l.startswith("| thumb")}
@@ -146,7 +146,7 @@ stale = [l for l in guide if l.startswith("| thumb") and l not in fresh]
 uno = [l for l in guide if l.startswith(("| avr", "| 1", "| 2", "| 3", "| 4", "| 5", "| 6", "| 7", "| 8", "| 9"))]
 stale += [l for l in uno if l not in doc.splitlines()]
 if stale or len(uno) < 11:
-    sys.exit("docs/guide-firmware.md: rows that are not the cost and size reports' (copy them from docs/cost-report.md):\n" + "\n".join(stale))
+    sys.exit("docs/guide-firmware.md: rows that are not the cost and size reports' (copy them from docs/reports/cost-report.md):\n" + "\n".join(stale))
 PY
 
 step "the desk tool's Monte Carlo benchmark runs (each case once, not timed)"
@@ -191,29 +191,29 @@ python3 scripts/flight_series.py | rustfmt --edition 2021 | diff - src/numeric/f
 python3 measure/generate.py --check
 
 step "measured tables are current (docs/ regenerates identically)"
-cargo run --quiet --release -p host-tests --bin error-table | diff - docs/error-table.md
-cargo run --quiet --release -p host-tests --bin debounce-report | diff - docs/debounce-comparison.md
+cargo run --quiet --release -p host-tests --bin error-table | diff - docs/reports/error-table.md
+cargo run --quiet --release -p host-tests --bin debounce-report | diff - docs/reports/debounce-comparison.md
 cargo run --quiet --release -p host-tests --bin trace-data | rustfmt --edition 2021 | diff - examples/data/relay_press.rs
 table=$(scripts/eval-catalogue.sh)
 python3 - "$table" <<'PY'
 import sys
 table = sys.argv[1].strip()
-for path in ("docs/guide-tiers.md", "docs/eval-catalogue.md"):
+for path in ("docs/guide-tiers.md", "docs/reports/eval-catalogue.md"):
     if table not in open(path).read():
         sys.exit(f"{path}: the eval table differs from scripts/eval-catalogue.sh's output")
 PY
 
-step "docs/calibration.md, docs/replay.md, their plots and the guides' replay and tap tables are current, and the keyboard matrix typed on the real switches (need the shared capture, ../shared/data)"
+step "docs/reports/calibration.md, docs/reports/replay.md, their plots and the guides' replay and tap tables are current, and the keyboard matrix typed on the real switches (need the shared capture, ../shared/data)"
 if [ -f ../shared/data/bouncy-button-uno.jsonl ]; then
-  scripts/calibration-report.sh | diff - docs/calibration.md
+  scripts/calibration-report.sh | diff - docs/reports/calibration.md
   replay=$(scripts/replay-report.sh)
-  diff <(printf '%s\n' "$replay") docs/replay.md
+  diff <(printf '%s\n' "$replay") docs/reports/replay.md
   plots=$(mktemp -d)
   cargo run --quiet --release -p bounce-table -- calibrate --plot "$plots/calibration" ../shared/data/bouncy-button-uno.jsonl > /dev/null
   cargo run --quiet --release -p bounce-table -- replay --switch-type push-button --plot "$plots/replay" ../shared/data/bouncy-button-uno.jsonl > /dev/null
   cargo run --quiet --release -p bounce-table -- replay --taps --switch-type push-button --plot "$plots/replay" ../shared/data/bouncy-button-uno.jsonl > /dev/null
-  diff -r "$plots/calibration" docs/calibration
-  diff -r "$plots/replay" docs/replay
+  diff -r "$plots/calibration" docs/reports/calibration
+  diff -r "$plots/replay" docs/reports/replay
   rm -rf "$plots"
   # The keyboard matrix: 100 keys of each real switch typed on (bounce-table/tests/matrix.rs).
   # (an absolute path: the test runs in its package's directory)

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Merges the trade measurements into docs/trade-report.md and docs/trade-pareto.svg.
+"""Merges the trade measurements into docs/reports/trade-report.md and docs/reports/trade-pareto.svg.
 
 Inputs (made by scripts/trade-report.sh in one run): the accuracy sweeps of `trade` (libm and
 micromath builds), criterion's medians in target/criterion, and the peer's timings and errors.
@@ -63,7 +63,7 @@ def main():
     md.append("with each backend, criterion benchmarks on the host, and the peer, scipy's `solve_ivp`). Errors are")
     md.append("against the exact reference on the committed grid (`host-tests/src/grid.rs`: every regime of")
     md.append("docs/physics.md sec. 4 and the switches of sec. 7). Flash and target instructions/cycles per tier:")
-    md.append("`docs/cost-report.md` (`scripts/cost-report.sh`).\n")
+    md.append("`docs/reports/cost-report.md` (`scripts/cost-report.sh`).\n")
     md.append("## Accuracy per regime\n")
     md.append("Relative error of the end of the bounce (`end`) and of the last impact above the threshold")
     md.append("(`last_above`), per scene of the grid: median / P95 / max. On the gap scenes with damping whose")
@@ -144,7 +144,7 @@ def main():
     # Medians over the benchmark scenes for every tier and precision: the Pareto data.
     md.append("\n## Cost and accuracy per tier (Pareto)\n")
     md.append("Host time: median over the benchmark scenes of each scene's median. Error: P95 over the grid's")
-    md.append("Zeno scenes (the usual closed switch) of the end time. `docs/trade-pareto.svg` plots it.\n")
+    md.append("Zeno scenes (the usual closed switch) of the end time. `docs/reports/trade-pareto.svg` plots it.\n")
     md.append("| tier | precision | host time | P95 error (Zeno end) |")
     md.append("|---|---|---:|---:|")
     points = []
@@ -203,7 +203,7 @@ def main():
         md.append("  misses grazing returns (the undamped gap above).")
     md.append("\n`Method::Auto` picks the cheapest tier (cost counted in map impacts of about 300 instructions on")
     md.append("a Cortex-M4F: an averaged integrand evaluation 0.6 of one, the exact tier 12 + 3 a flight,")
-    md.append("`docs/cost-report.md`) whose per-scene expected error meets the tolerance; the exact tier")
+    md.append("`docs/reports/cost-report.md`) whose per-scene expected error meets the tolerance; the exact tier")
     md.append("always does. Across this")
     md.append("grid and 10,000 scenes off it, it promised and kept every promise at 10 %, 1 % and 0.1 % on every")
     md.append("scene with a finite bounce (`host-tests/tests/against_reference.rs`).")

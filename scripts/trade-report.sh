@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # One command for the speed/accuracy trade: the accuracy sweep of every tier (f64, f32 with
 # libm, f32 with micromath) against the exact reference, criterion benchmarks on the host, and
-# the peer (scipy's solve_ivp) on the same scenes, merged into docs/trade-report.md and
-# docs/trade-pareto.svg. Installs scipy and numpy (PyPI) if missing. Takes a few minutes.
+# the peer (scipy's solve_ivp) on the same scenes, merged into docs/reports/trade-report.md and
+# docs/reports/trade-pareto.svg. Installs scipy and numpy (PyPI) if missing. Takes a few minutes.
 #
 # Usage: scripts/trade-report.sh [--quick]
 #   --quick: the pipeline once, no timing (benchmarks in test mode, the peer on one scene), into
@@ -27,5 +27,5 @@ if [ "$quick" = 1 ]; then
 fi
 cargo bench --quiet -p host-tests --bench tiers > "$tmp/bench.log"
 python3 scripts/peer.py "$tmp/scenes.json" "$tmp/peer.json"
-python3 scripts/trade-report.py "$tmp/libm.json" "$tmp/micromath.json" "$tmp/peer.json" docs
-echo "wrote docs/trade-report.md and docs/trade-pareto.svg"
+python3 scripts/trade-report.py "$tmp/libm.json" "$tmp/micromath.json" "$tmp/peer.json" docs/reports
+echo "wrote docs/reports/trade-report.md and docs/reports/trade-pareto.svg"

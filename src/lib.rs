@@ -58,7 +58,7 @@
 //! A window from the model covers the bounce of the impact model: the first flights of a
 //! contact. Real hand-operated switches also dwell, chatter and bounce again later, beyond it;
 //! for them, let a [`LearningDebouncer`] learn the switch, or set the window from a capture
-//! (`bounce-table calibrate` and `bounce-table replay` in the repository, `docs/replay.md`).
+//! (`bounce-table calibrate` and `bounce-table replay` in the repository, `docs/reports/replay.md`).
 //!
 //! # Features
 //!

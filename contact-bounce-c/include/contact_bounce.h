@@ -379,7 +379,7 @@ cb_error cb_predict_auto(const struct cb_switch *sw, float tolerance, struct cb_
 // where they meet `tolerance`, else the exact tier (which does on every one-body switch). No
 // map and no averaged quadrature are linked (beyond the exact tier's rest past its cap):
 // in Rust firmware 4.2-4.5 KB less than Auto among every tier on Cortex-M and 9.8 KB less on the
-// Uno (`docs/cost-report.md`, auto-exact).
+// Uno (`docs/reports/cost-report.md`, auto-exact).
 cb_error cb_predict_auto_exact(const struct cb_switch *sw,
                                float tolerance,
                                struct cb_prediction *out);
@@ -401,7 +401,7 @@ cb_error cb_bounce_seconds_exact(const struct cb_switch *sw, float *seconds);
 // The bounce time of a preloaded switch (`offset` < 0) by the closed forms: as
 // `cb_bounce_seconds_closed`, but a gap or an offset of 0 is `CB_PARAM_OFFSET` /
 // `CB_ERR_OUT_OF_RANGE`, and no gap's code is linked (on the Uno the closed, averaged and map
-// tiers fit from C only this way, and the exact tier not even so: `docs/c-api-uno.md`).
+// tiers fit from C only this way, and the exact tier not even so: `docs/reports/c-api-uno.md`).
 cb_error cb_preload_seconds_closed(const struct cb_switch *sw, float *seconds);
 
 // The bounce time of a preloaded switch by the averaged model, as `cb_preload_seconds_closed`.
@@ -433,7 +433,7 @@ cb_error cb_seconds_to_ticks(float seconds,
 // The lean path: a preloaded contact's bounce time `t_b1v` (restitution and viscous damping;
 // `damping_ratio` 0 gives `t_b1`) straight from its inputs, with no scene and no tier: the
 // smallest firmware (about 4 KB of the Uno's flash from C, a tier through this API 17 KB and
-// more: `docs/c-api-uno.md`). Expected error within 2.5 % plus the arctangent linearisation
+// more: `docs/reports/c-api-uno.md`). Expected error within 2.5 % plus the arctangent linearisation
 // for a small first impulse; the estimate says when the inputs are beyond that. Rust's
 // `tiers::preload_viscous_bounce_time`.
 cb_error cb_preload_viscous_bounce_time(const struct cb_preloaded *sw, struct cb_estimate *out);

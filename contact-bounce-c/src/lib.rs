@@ -485,7 +485,7 @@ pub extern "C" fn cb_predict_auto(
 /// where they meet `tolerance`, else the exact tier (which does on every one-body switch). No
 /// map and no averaged quadrature are linked (beyond the exact tier's rest past its cap):
 /// in Rust firmware 4.2-4.5 KB less than Auto among every tier on Cortex-M and 9.8 KB less on the
-/// Uno (`docs/cost-report.md`, auto-exact).
+/// Uno (`docs/reports/cost-report.md`, auto-exact).
 #[allow(unsafe_code)]
 #[no_mangle]
 pub extern "C" fn cb_predict_auto_exact(
@@ -607,7 +607,7 @@ pub extern "C" fn cb_bounce_seconds_exact(
 /// The bounce time of a preloaded switch (`offset` < 0) by the closed forms: as
 /// `cb_bounce_seconds_closed`, but a gap or an offset of 0 is `CB_PARAM_OFFSET` /
 /// `CB_ERR_OUT_OF_RANGE`, and no gap's code is linked (on the Uno the closed, averaged and map
-/// tiers fit from C only this way, and the exact tier not even so: `docs/c-api-uno.md`).
+/// tiers fit from C only this way, and the exact tier not even so: `docs/reports/c-api-uno.md`).
 #[allow(unsafe_code)]
 #[no_mangle]
 pub extern "C" fn cb_preload_seconds_closed(
@@ -785,7 +785,7 @@ impl From<&cb_preloaded> for Preloaded<f32> {
 /// The lean path: a preloaded contact's bounce time `t_b1v` (restitution and viscous damping;
 /// `damping_ratio` 0 gives `t_b1`) straight from its inputs, with no scene and no tier: the
 /// smallest firmware (about 4 KB of the Uno's flash from C, a tier through this API 17 KB and
-/// more: `docs/c-api-uno.md`). Expected error within 2.5 % plus the arctangent linearisation
+/// more: `docs/reports/c-api-uno.md`). Expected error within 2.5 % plus the arctangent linearisation
 /// for a small first impulse; the estimate says when the inputs are beyond that. Rust's
 /// `tiers::preload_viscous_bounce_time`.
 #[allow(unsafe_code)]

@@ -124,7 +124,7 @@ fn fault(e: cb_error, p: &cb_prediction) -> Option<&'static str> {
 }
 
 /// A call slower than this is a fault ("over time"): a hang detector, not a speed test (the
-/// slowest call of the long run in `docs/fuzz.md` took 0.1 s; the host harness allows 2 s too).
+/// slowest call of the long run in `docs/reports/fuzz.md` took 0.1 s; the host harness allows 2 s too).
 const OVER_TIME: std::time::Duration = std::time::Duration::from_secs(2);
 
 #[test]

@@ -2,7 +2,7 @@
 // impacts walked one by one with `MapImpacts` and its Zeno tail (the map tier's end time, with
 // none of the averaged model linked), and a compile-time window. The full `predict` report
 // (three tiers) needs more AVR flash than the Uno's 32 KB (`uno_cost_closed_map` in
-// docs/cost-report.md).
+// docs/reports/cost-report.md).
 
 use contact_bounce::{scene::catalogue, tiers::MapImpacts, tiers::DEFAULT_MAX_IMPACTS, Float};
 use core::fmt::Write;

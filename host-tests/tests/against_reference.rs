@@ -2,7 +2,7 @@
 //! (every regime of docs/physics.md sec. 4 and the switches of sec. 7) and on scenes off it: the
 //! regime agrees, and wherever a tier states an expected error, the measured error is within
 //! it. The expected errors are docs/physics.md sec. 6, corrected where the reference showed them
-//! wrong (see src/accuracy and docs/error-table.md); none is widened here.
+//! wrong (see src/accuracy and docs/reports/error-table.md); none is widened here.
 
 use contact_bounce::{Method, Nodes};
 use host_tests::grid::{compare, grid, off_grid, two_body_grid, GridScene, Row, TwoBodyScene};

@@ -71,7 +71,7 @@ static SLOWEST: std::sync::Mutex<(u128, String)> = std::sync::Mutex::new((0, Str
 
 /// A prediction slower than this is a fault ("over time"): a hang detector, not a speed test.
 /// Every tier's work is bounded by construction (`Scene::exact_work`); the slowest call of the
-/// long run in `docs/fuzz.md` took 0.4 s on a 2-core x86-64 host, so 2 s leaves a factor of
+/// long run in `docs/reports/fuzz.md` took 0.4 s on a 2-core x86-64 host, so 2 s leaves a factor of
 /// five for a slower or busier machine.
 const OVER_TIME: std::time::Duration = std::time::Duration::from_secs(2);
 

@@ -121,7 +121,7 @@ fn scenes(n: usize) -> usize {
         .unwrap_or(n)
 }
 
-/// One line `scripts/fuzz.sh` reads into `docs/fuzz.md`: a family, its scenes drawn and
+/// One line `scripts/fuzz.sh` reads into `docs/reports/fuzz.md`: a family, its scenes drawn and
 /// judged, and the promises broken (none of the other faults' kinds are checked here).
 fn report(family: &str, judged: usize, broken: &[String], n: usize) {
     eprintln!(

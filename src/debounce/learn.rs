@@ -522,7 +522,7 @@ impl LearningState {
     /// Feeds one sample (`true`: the contact reads closed) with the caller's prior; returns the
     /// edge it debounces, if any.
     // Always inlined: the idle path is the cost of nearly every sample, a few instructions
-    // inline (docs/cost-report.md) where a call would cost more than the path.
+    // inline (docs/reports/cost-report.md) where a call would cost more than the path.
     #[allow(clippy::inline_always)]
     #[inline(always)]
     pub fn update(&mut self, closed: bool, prior: &LearnerPrior) -> Option<Edge> {

@@ -37,7 +37,7 @@ impl<F: Float> Tolerance<F> {
 ///
 /// Every tier's work is bounded by its settings, known before the call; none loops on its
 /// input. In evaluations (a few dozen float operations each; on a Cortex-M4F in f32, an impact of
-/// the map is about 300 instructions, `docs/cost-report.md`):
+/// the map is about 300 instructions, `docs/reports/cost-report.md`):
 /// - `Closed`: a fixed handful of logarithms and roots.
 /// - `Averaged(n)`: at most 2,000 panels of `n` nodes for each of the (at most three) integrals a
 ///   prediction takes; with a relaxation kernel each node sums the kernel's harmonics.
@@ -52,7 +52,7 @@ impl<F: Float> Tolerance<F> {
 ///   worst the three together, the exact tier's at
 ///   [`EXACT_MAX_IMPACTS`](crate::tiers::EXACT_MAX_IMPACTS) dominating (on a kernel of long
 ///   memory, up to 100,000 x 4,096 evaluations: the fuzzing harness's slowest calls, its
-///   report in `docs/fuzz.md`, are of this kind).
+///   report in `docs/reports/fuzz.md`, are of this kind).
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[non_exhaustive]
@@ -81,7 +81,7 @@ pub enum Method<F> {
     /// The cheapest tier whose expected error (docs/physics.md sec. 6) is within the tolerance:
     /// closed if it is; else the map, the averaged model and the exact tier in the order of
     /// their estimated cost (known before any of them runs: impacts to walk, panels, flights;
-    /// weighed as on a Cortex-M4F, `docs/cost-report.md`), the exact tier always among them, as
+    /// weighed as on a Cortex-M4F, `docs/reports/cost-report.md`), the exact tier always among them, as
     /// it promises the float's rounding on every one-body scene with at most one kernel. Where
     /// nothing does (two kernels; f32 over very many impacts; a return decided by rounding;
     /// more flights than the exact tier's cap) the smallest expected error wins (the closed
@@ -101,7 +101,7 @@ pub enum Method<F> {
 /// linked: `AutoTiers::EXACT` alone links the closed forms and the exact tier, and no map,
 /// no averaged quadrature and none of their expected errors (on the Uno, Auto among all tiers
 /// does not fit its 32 KB; among the closed forms and the exact tier it does:
-/// `docs/cost-report.md`, auto-exact).
+/// `docs/reports/cost-report.md`, auto-exact).
 ///
 /// ```
 /// use contact_bounce::{scene::catalogue, tiers::AutoTiers, Tolerance};
@@ -207,7 +207,7 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
     /// the counts and the expected error a [`Prediction`] carries: firmware that asks only for
     /// a window links none of their code (on the tactile dome in f32, 0.8-2.1 KB less per tier
     /// on a Cortex-M4F and 1.4-4.3 KB on the Uno: "One firmware per tier" in the repository's
-    /// `docs/cost-report.md`). `Method::Auto` chooses its tier by the expected errors, so it
+    /// `docs/reports/cost-report.md`). `Method::Auto` chooses its tier by the expected errors, so it
     /// computes them all the same. `None` where [`Prediction::bounce_time`] is `None` (no end
     /// and no threshold time: both beyond the float's range).
     /// [`Window::from_scene`](crate::Window::from_scene) turns it into a window.
@@ -345,7 +345,7 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
     /// for one outside `TIERS`), in map impacts: on a Cortex-M4F (f32), on the tactile dome, an
     /// impact of the map costs about 300 instructions (3594 over ~12 impacts walked before the
     /// Zeno tail) and an E1 evaluation of the averaged tier about 185 (N8: 13323 over 9 panels x
-    /// 8 nodes), so 0.6 of an impact (`docs/cost-report.md`, `scripts/cost-report.sh`). The
+    /// 8 nodes), so 0.6 of an impact (`docs/reports/cost-report.md`, `scripts/cost-report.sh`). The
     /// exact tier's is `exact::cost`. Inlined into its one caller, as it was written there.
     #[allow(clippy::inline_always)]
     #[inline(always)]
@@ -390,7 +390,7 @@ impl<F: Float, D: Dissipation<F>, S: OffsetSign> Scene<F, D, S> {
             let (panels, _) = panel_count((walk.ln_start - ln_damped_floor).max(F::ZERO));
             let per_evaluation = if self.dissipation().has_kernel() {
                 // With a kernel an E1 evaluation costs 5.2 times more (N8 on the dome: about
-                // 69,800 instructions with a kernel, 13,350 without, `docs/cost-report.md`).
+                // 69,800 instructions with a kernel, 13,350 without, `docs/reports/cost-report.md`).
                 3.1
             } else {
                 0.6

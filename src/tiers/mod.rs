@@ -10,7 +10,7 @@
 //!
 //! Each gives a [`Prediction`]: the regime, the end of the bounce or the last impact above a
 //! threshold, impact counts, the first impacts, the [`Tier`] that answered and its expected
-//! error. `docs/physics.md` sec. 6 and `docs/trade-report.md` in the repository give each
+//! error. `docs/physics.md` sec. 6 and `docs/reports/trade-report.md` in the repository give each
 //! tier's measured accuracy and cost.
 
 pub(crate) mod accuracy;

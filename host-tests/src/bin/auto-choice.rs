@@ -5,7 +5,7 @@
 //! viscous damping and those with a relaxation kernel: how many Auto promised, Auto's median
 //! and P90 time, Auto's median where a tier cheaper than the exact one promises, and the ratio
 //! of Auto's time to the cheapest promising tier's (median, P90, max). Auto weighs the tiers by
-//! costs fitted on a Cortex-M4F (`docs/cost-report.md`), so on this host it can pick a tier
+//! costs fitted on a Cortex-M4F (`docs/reports/cost-report.md`), so on this host it can pick a tier
 //! that is not the fastest here: the ratio says how far that costs.
 //!
 //! Each time is the best of 5 runs of at least 200 us of repeated calls: a measurement, not a

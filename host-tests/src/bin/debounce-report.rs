@@ -1,4 +1,4 @@
-//! Regenerates docs/debounce-comparison.md: the debouncer with the physics window (the core's
+//! Regenerates docs/reports/debounce-comparison.md: the debouncer with the physics window (the core's
 //! Auto prediction at 10 %, widened by its expected error) against fixed 5 ms and 10 ms
 //! windows, on press traces of the exact reference for the switches of docs/physics.md sec. 7:
 //! false edges and latency (end of bounce to the settled report), side by side.
@@ -85,8 +85,8 @@ fn main() {
     );
     print!("{out}");
     if write {
-        if let Err(e) = std::fs::write("docs/debounce-comparison.md", &out) {
-            eprintln!("debounce-report: cannot write docs/debounce-comparison.md: {e}");
+        if let Err(e) = std::fs::write("docs/reports/debounce-comparison.md", &out) {
+            eprintln!("debounce-report: cannot write docs/reports/debounce-comparison.md: {e}");
             std::process::exit(1);
         }
     }

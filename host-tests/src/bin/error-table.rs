@@ -1,4 +1,4 @@
-//! Regenerates docs/error-table.md: every tier of the core against the exact reference on the
+//! Regenerates docs/reports/error-table.md: every tier of the core against the exact reference on the
 //! grid of `host_tests::grid`, per family of scenes (regimes of docs/physics.md sec. 4 and the
 //! switches of sec. 7): median, P95 and max relative error of the bounce time, and how often
 //! the tier's stated expected error held.
@@ -205,8 +205,8 @@ fn main() -> ExitCode {
     two_bodies(&mut out);
     print!("{out}");
     if write {
-        if let Err(e) = std::fs::write("docs/error-table.md", &out) {
-            eprintln!("error-table: cannot write docs/error-table.md: {e}");
+        if let Err(e) = std::fs::write("docs/reports/error-table.md", &out) {
+            eprintln!("error-table: cannot write docs/reports/error-table.md: {e}");
             return ExitCode::FAILURE;
         }
     }

@@ -36,7 +36,7 @@ impl<F: Float> Viscous<F> {
     /// `Scene<F, Undamped>`, or, chosen at run time, `Option<Viscous<F>>` (`None`): so a scene
     /// typed `Viscous` is damped, and its firmware links none of the undamped paths (the exact
     /// sums of zeta = 0: 3.5 KB of the closed tier and 3.8 KB of the exact one on the Uno; 1.5 KB
-    /// of the closed tier and 1.4 KB of the exact one on a Cortex-M4F, `docs/cost-report.md`).
+    /// of the closed tier and 1.4 KB of the exact one on a Cortex-M4F, `docs/reports/cost-report.md`).
     ///
     /// # Errors
     /// [`Parameter::DampingRatio`] when zeta is NaN, infinite, negative ([`Reason::Negative`])

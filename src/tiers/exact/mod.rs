@@ -80,7 +80,7 @@ const TAIL_ROUNDING: f64 = 16.0;
 /// [`Method::Auto`](crate::Method::Auto)'s estimate of this tier's work on `scene`, before it
 /// runs, in Auto's unit: an impact of the map, about 300 instructions on a Cortex-M4F in f32.
 /// Measured there (f32, the catalogue's switches and the tactile dome with a relaxation kernel,
-/// `docs/cost-report.md`): with viscous damping about 3,500 instructions before the first
+/// `docs/reports/cost-report.md`): with viscous damping about 3,500 instructions before the first
 /// flight (the regime's closed forms, the tail's series) and 850-900 a flight (2 to 6 flights
 /// solved on the catalogue's switches), so 12 + 3 a flight;
 /// with a kernel, whose flights are solved mode by mode, about 4,500 and 2,900 a flight (5 to 37

@@ -22,7 +22,7 @@
 //! ([`Tuning::SERIES_EXACT_DEPARTURE`](crate::numeric::Tuning)), two polynomials each
 //! ([`ZenoTail::exact_flight`]): the few flights walked there, and the few more solved above
 //! it, cost less than the terms left out (on the Cortex-M4F, f32, the tier's instructions on
-//! the catalogue's switches fell by 14-24 %: `docs/cost-report.md`).
+//! the catalogue's switches fell by 14-24 %: `docs/reports/cost-report.md`).
 
 use crate::numeric::c;
 use crate::numeric::flight_series::TERMS;

@@ -4,7 +4,7 @@
  * scripts/arduino-library.sh builds this folder from the repository. On the Uno, the learner,
  * the debouncer, the lean paths (cb_preload_viscous_bounce_time and the like) and the closed, averaged
  * and map tiers through cb_preload_seconds_* fit; the exact tier and either Auto do not (the
- * repository's docs/c-api-uno.md measures each entry point alone). */
+ * repository's docs/reports/c-api-uno.md measures each entry point alone). */
 #ifndef CONTACT_BOUNCE_ARDUINO_H
 #define CONTACT_BOUNCE_ARDUINO_H
 #include "contact_bounce.h"
